@@ -1,0 +1,30 @@
+#include "dynamics/energy.h"
+
+namespace walkers {
+
+double KineticEnergy(const Model& model, const Kinematics& kin) {
+  auto point = [](double m, const PointKinematics& p) { return 0.5 * m * p.v.squaredNorm(); };
+  auto spin = [](double inertia, const AngleKinematics& a) { return 0.5 * inertia * a.rate * a.rate; };
+  double e = point(model.trunk_mass, kin.trunk) + point(model.hips_mass, kin.hip) +
+             spin(model.trunk_inertia, kin.pitch);
+  for (const LegKinematics& leg : kin.legs) {
+    e += point(model.knee_mass, leg.knee) + point(model.ankle_mass, leg.ankle);
+    e += spin(model.femur_inertia, leg.femur) + spin(model.tibia_inertia, leg.tibia) +
+         spin(model.foot_inertia, leg.foot);
+  }
+  return e;
+}
+
+double GravitationalEnergy(const Model& model, const Kinematics& kin) {
+  double mass_height = model.trunk_mass * kin.trunk.p.y() + model.hips_mass * kin.hip.p.y();
+  for (const LegKinematics& leg : kin.legs) {
+    mass_height += model.knee_mass * leg.knee.p.y() + model.ankle_mass * leg.ankle.p.y();
+  }
+  return model.options.gravity * mass_height;
+}
+
+double PotentialEnergy(const Model& model, const Kinematics& kin, const Welds& welds) {
+  return GravitationalEnergy(model, kin) + ElasticEnergy(model, kin, welds);
+}
+
+}  // namespace walkers

@@ -1,0 +1,196 @@
+#include "dynamics/integrator.h"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <stdexcept>
+
+namespace walkers {
+
+constexpr int kStateSize = 2 * kNumCoords;  // y = (q, v)
+
+struct Integrator::Cvode {
+  SUNContext context = nullptr;
+  N_Vector y = nullptr;
+  N_Vector abs_tol = nullptr;
+  SUNMatrix jacobian = nullptr;
+  SUNLinearSolver linear_solver = nullptr;
+  void* mem = nullptr;
+
+  ~Cvode() {
+    if (mem) CVodeFree(&mem);
+    if (linear_solver) SUNLinSolFree(linear_solver);
+    if (jacobian) SUNMatDestroy(jacobian);
+    if (abs_tol) N_VDestroy(abs_tol);
+    if (y) N_VDestroy(y);
+    if (context) SUNContext_Free(&context);
+  }
+};
+
+// C entry points CVODE calls back into
+struct CvodeCallbacks {
+  static int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* self) {
+    // a non-finite result is unrecoverable: CVODE stops with CV_RHSFUNC_FAIL
+    return static_cast<Integrator*>(self)->EvaluateRightHandSide(N_VGetArrayPointer(y), N_VGetArrayPointer(ydot))
+               ? 0
+               : -1;
+  }
+  static void ErrorHandler(int /*code*/, const char* /*module*/, const char* /*function*/, char* message,
+                           void* self) {
+    // keep CVODE quiet: the message travels back to the caller in the status
+    static_cast<Integrator*>(self)->last_cvode_message_ = message ? message : "";
+  }
+};
+
+namespace {
+
+void Check(int flag, const char* call) {
+  if (flag < 0) throw std::runtime_error(std::string("CVODE setup failed in ") + call);
+}
+
+}  // namespace
+
+Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
+    : model_(model), settings_(settings), cv_(std::make_unique<Cvode>()) {
+  Check(SUNContext_Create(nullptr, &cv_->context), "SUNContext_Create");
+  cv_->y = N_VNew_Serial(kStateSize, cv_->context);
+  cv_->abs_tol = N_VNew_Serial(kStateSize, cv_->context);
+  if (!cv_->y || !cv_->abs_tol) throw std::runtime_error("CVODE setup failed: N_VNew_Serial");
+  N_VConst(0.0, cv_->y);
+
+  const int lmm = settings.method == MultistepMethod::kBdf ? CV_BDF : CV_ADAMS;
+  cv_->mem = CVodeCreate(lmm, cv_->context);
+  if (!cv_->mem) throw std::runtime_error("CVODE setup failed: CVodeCreate");
+  Check(CVodeInit(cv_->mem, &CvodeCallbacks::RightHandSide, 0.0, cv_->y), "CVodeInit");
+  Check(CVodeSetUserData(cv_->mem, this), "CVodeSetUserData");
+  Check(CVodeSetErrHandlerFn(cv_->mem, &CvodeCallbacks::ErrorHandler, this), "CVodeSetErrHandlerFn");
+
+  // per-component absolute tolerances: positions, then velocities
+  double* atol = N_VGetArrayPointer(cv_->abs_tol);
+  for (int i = 0; i < kNumCoords; ++i) {
+    atol[i] = settings.absolute_tolerance_position;
+    atol[kNumCoords + i] = settings.absolute_tolerance_velocity;
+  }
+  Check(CVodeSVtolerances(cv_->mem, settings.relative_tolerance, cv_->abs_tol), "CVodeSVtolerances");
+  Check(CVodeSetMaxOrd(cv_->mem, settings.max_order), "CVodeSetMaxOrd");
+  Check(CVodeSetStabLimDet(cv_->mem, settings.stability_limit_detection ? SUNTRUE : SUNFALSE),
+        "CVodeSetStabLimDet");
+
+  // Newton iteration (CVODE's default) with a dense direct linear solver and
+  // CVODE's finite-difference Jacobian
+  cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);
+  cv_->linear_solver = SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context);
+  if (!cv_->jacobian || !cv_->linear_solver) throw std::runtime_error("CVODE setup failed: dense solver");
+  Check(CVodeSetLinearSolver(cv_->mem, cv_->linear_solver, cv_->jacobian), "CVodeSetLinearSolver");
+}
+
+Integrator::~Integrator() = default;
+
+void Integrator::Reset(double t0, const State& state, const Inputs& inputs) {
+  state_ = state;
+  inputs_ = inputs;
+  t_ = t0;
+  double* y = N_VGetArrayPointer(cv_->y);
+  for (int i = 0; i < kNumCoords; ++i) {
+    y[i] = state.q(i);
+    y[kNumCoords + i] = model_.options.locked[i] ? 0.0 : state.v(i);
+  }
+  state_.v = Eigen::Map<const Vec9>(y + kNumCoords);
+  Check(CVodeReInit(cv_->mem, t0, cv_->y), "CVodeReInit");
+  finished_ = IntegratorStats{};
+  rhs_evals_ = 0;
+  needs_restart_ = false;
+  non_finite_ = false;
+}
+
+void Integrator::SetInputs(const Inputs& inputs) {
+  inputs_ = inputs;
+  if (settings_.restart_on_input_change) needs_restart_ = true;
+}
+
+IntegratorStats Integrator::stats() const {
+  IntegratorStats s = finished_;
+  long n = 0;
+  CVodeGetNumSteps(cv_->mem, &n);
+  s.steps += n;
+  CVodeGetNumJacEvals(cv_->mem, &n);
+  s.jacobian_evals += n;
+  CVodeGetNumErrTestFails(cv_->mem, &n);
+  s.error_test_failures += n;
+  CVodeGetNumNonlinSolvConvFails(cv_->mem, &n);
+  s.nonlinear_failures += n;
+  s.rhs_evals = rhs_evals_;
+  return s;
+}
+
+IntegrationStatus Integrator::AdvanceTo(double t) {
+  IntegrationStatus status;
+  if (!(t > t_)) return status;
+
+  if (needs_restart_) {
+    // CVodeReInit clears CVODE's counters: keep what they held
+    const IntegratorStats s = stats();
+    finished_ = s;
+    finished_.restarts = s.restarts + 1;
+    Check(CVodeReInit(cv_->mem, t_, cv_->y), "CVodeReInit");
+    needs_restart_ = false;
+  }
+
+  const IntegratorStats before = stats();
+  const long remaining = settings_.step_budget - before.steps;
+  if (remaining <= 0) {
+    status.failure = IntegrationFailure::kStepBudget;
+    status.reason = "step budget of " + std::to_string(settings_.step_budget) + " steps exhausted at t=" +
+                    std::to_string(t_);
+    return status;
+  }
+  CVodeSetMaxNumSteps(cv_->mem, remaining);
+  // never step past t: the caller may change the inputs there
+  CVodeSetStopTime(cv_->mem, t);
+
+  double t_reached = t_;
+  const int flag = CVode(cv_->mem, t, cv_->y, &t_reached, CV_NORMAL);
+  t_ = t_reached;
+  CopyStateFromVector();
+
+  if (flag >= 0 && state_.q.allFinite() && state_.v.allFinite()) return status;
+
+  if (non_finite_ || !state_.q.allFinite() || !state_.v.allFinite()) {
+    status.failure = IntegrationFailure::kNonFinite;
+    status.reason = "non-finite accelerations at t=" + std::to_string(t_);
+  } else if (flag == CV_TOO_MUCH_WORK) {
+    status.failure = IntegrationFailure::kStepBudget;
+    status.reason = "step budget of " + std::to_string(settings_.step_budget) + " steps exhausted at t=" +
+                    std::to_string(t_);
+  } else {
+    status.failure = IntegrationFailure::kSolver;
+    status.reason = std::string(CVodeGetReturnFlagName(flag)) + " at t=" + std::to_string(t_);
+    if (!last_cvode_message_.empty()) status.reason += ": " + last_cvode_message_;
+  }
+  return status;
+}
+
+void Integrator::CopyStateFromVector() {
+  const double* y = N_VGetArrayPointer(cv_->y);
+  state_.q = Eigen::Map<const Vec9>(y);
+  state_.v = Eigen::Map<const Vec9>(y + kNumCoords);
+}
+
+bool Integrator::EvaluateRightHandSide(const double* y, double* ydot) {
+  ++rhs_evals_;
+  const Eigen::Map<const Vec9> q(y), v(y + kNumCoords);
+  Eigen::Map<Vec9> qd(ydot), vd(ydot + kNumCoords);
+  Vec9 qdd;
+  if (!ForwardDynamics(model_, inputs_, q, v, &workspace_, &qdd)) {
+    non_finite_ = true;
+    return false;
+  }
+  qd = v;
+  vd = qdd;
+  return true;
+}
+
+}  // namespace walkers

@@ -1,0 +1,92 @@
+// Time integration of the walker with SUNDIALS CVODE (BDF, Newton iteration,
+// dense direct linear solver). Each Integrator owns its SUNContext and CVODE
+// memory and shares nothing, so many run at once on different threads.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "dynamics/coords.h"
+#include "dynamics/equations_of_motion.h"
+#include "dynamics/model.h"
+
+namespace walkers {
+
+enum class MultistepMethod { kBdf, kAdams };
+
+struct IntegratorSettings {
+  MultistepMethod method = MultistepMethod::kBdf;
+  double relative_tolerance = 1e-6;           // [-]
+  double absolute_tolerance_position = 1e-6;  // [m, rad]
+  double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
+  int max_order = 5;                          // BDF: 1..5, Adams: 1..12
+  bool stability_limit_detection = false;
+  // Restart CVODE (back to order 1) whenever the held inputs change: they
+  // change the right-hand side discontinuously.
+  bool restart_on_input_change = true;
+  long step_budget = 1000000;  // steps allowed since the last Reset
+};
+
+struct IntegratorStats {
+  long steps = 0;
+  long rhs_evals = 0;  // every right-hand side, including those of finite-difference Jacobians
+  long jacobian_evals = 0;
+  long error_test_failures = 0;
+  long nonlinear_failures = 0;
+  long restarts = 0;
+};
+
+enum class IntegrationFailure { kNone, kNonFinite, kStepBudget, kSolver };
+
+struct IntegrationStatus {
+  IntegrationFailure failure = IntegrationFailure::kNone;
+  std::string reason;  // empty on success
+  bool ok() const { return failure == IntegrationFailure::kNone; }
+};
+
+class Integrator {
+ public:
+  explicit Integrator(const Model& model, const IntegratorSettings& settings = {});
+  ~Integrator();
+  Integrator(const Integrator&) = delete;
+  Integrator& operator=(const Integrator&) = delete;
+
+  // Starts a new trajectory at (t0, state) holding `inputs`; clears the stats.
+  void Reset(double t0, const State& state, const Inputs& inputs = {});
+
+  // Replaces the held inputs from the current time on.
+  void SetInputs(const Inputs& inputs);
+
+  // Integrates from the current time to t (> current time). On failure the
+  // state is the last one CVODE reached and the status says why.
+  IntegrationStatus AdvanceTo(double t);
+
+  double time() const { return t_; }
+  const State& state() const { return state_; }
+  const Inputs& inputs() const { return inputs_; }
+  const Model& model() const { return model_; }
+  IntegratorStats stats() const;
+
+ private:
+  friend struct CvodeCallbacks;
+  // y' = f(y) for y = (q, v); false when the accelerations are not finite
+  bool EvaluateRightHandSide(const double* y, double* ydot);
+  void CopyStateFromVector();
+
+  Model model_;
+  IntegratorSettings settings_;
+  Inputs inputs_;
+  Workspace workspace_;
+  State state_;
+  double t_ = 0;
+  bool needs_restart_ = false;
+  bool non_finite_ = false;
+  std::string last_cvode_message_;
+  IntegratorStats finished_;  // stats of CVODE runs before the last restart
+  long rhs_evals_ = 0;
+
+  struct Cvode;  // SUNDIALS handles
+  std::unique_ptr<Cvode> cv_;
+};
+
+}  // namespace walkers

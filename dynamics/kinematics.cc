@@ -1,0 +1,85 @@
+#include "dynamics/kinematics.h"
+
+#include <cmath>
+
+namespace walkers {
+namespace {
+
+AngleKinematics MakeAngle(const Row9& j, const Vec9& q, const Vec9& v) {
+  AngleKinematics a;
+  a.j = j;
+  a.angle = j.dot(q);
+  a.rate = j.dot(v);
+  return a;
+}
+
+}  // namespace
+
+PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r) {
+  // p = p_base + r(angle): dr/dangle = perp(r) = (-r_y, r_x), d2r/dangle2 = -r
+  const Vec2 perp(-r.y(), r.x());
+  PointKinematics out;
+  out.p = base.p + r;
+  out.v = base.v + perp * body.rate;
+  out.a_bias = base.a_bias - r * (body.rate * body.rate);
+  out.J = base.J + perp * body.j;
+  return out;
+}
+
+void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinematics* kin) {
+  const BodyParameters& b = model.body;
+
+  // trunk centre: the floating base
+  kin->trunk.p = q.segment<2>(kX);
+  kin->trunk.v = v.segment<2>(kX);
+  kin->trunk.a_bias.setZero();
+  kin->trunk.J.setZero();
+  kin->trunk.J(0, kX) = 1.0;
+  kin->trunk.J(1, kY) = 1.0;
+
+  Row9 j = Row9::Zero();
+  j(kPitch) = 1.0;
+  kin->pitch = MakeAngle(j, q, v);
+
+  // hips at (0, -half_body_y) in the trunk frame
+  kin->hip = OffsetPoint(kin->trunk, kin->pitch, Rotate(kin->pitch.angle, Vec2(0.0, -b.half_body_y)));
+
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    LegKinematics& l = kin->legs[leg];
+    // absolute angles down the chain: child = parent - joint angle
+    Row9 j_femur = kin->pitch.j;
+    j_femur(JointIndex(leg, kHip)) = -1.0;
+    Row9 j_tibia = j_femur;
+    j_tibia(JointIndex(leg, kKnee)) = -1.0;
+    Row9 j_foot = j_tibia;
+    j_foot(JointIndex(leg, kAnkle)) = -1.0;
+    l.femur = MakeAngle(j_femur, q, v);
+    l.tibia = MakeAngle(j_tibia, q, v);
+    l.foot = MakeAngle(j_foot, q, v);
+
+    l.knee = OffsetPoint(kin->hip, l.femur, b.femur_length * SegmentDirection(l.femur.angle));
+    l.ankle = OffsetPoint(l.knee, l.tibia, b.tibia_length * SegmentDirection(l.tibia.angle));
+  }
+}
+
+}  // namespace walkers
+
+namespace walkers {
+
+State StandingState(const Model& model, double knee_flexion, double foot_x) {
+  State s;
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    s.q(JointIndex(leg, kHip)) = -0.5 * knee_flexion;
+    s.q(JointIndex(leg, kKnee)) = knee_flexion;
+    s.q(JointIndex(leg, kAnkle)) = -0.5 * knee_flexion;
+  }
+  // place the trunk so that the feet's centres sit at (foot_x, half_foot_y)
+  Kinematics kin;
+  ComputeKinematics(model, s.q, s.v, &kin);
+  const Vec2 ankle = kin.legs[kLeft].ankle.p;
+  s.q(kX) = foot_x - ankle.x();
+  s.q(kY) = model.body.half_foot_y - ankle.y();
+  return s;
+}
+
+}  // namespace walkers

@@ -1,0 +1,68 @@
+// Forward kinematics of the planar tree: position, velocity, Jacobian and
+// velocity-product ("bias") acceleration of every point the dynamics uses.
+#pragma once
+
+#include <array>
+
+#include "dynamics/coords.h"
+#include "dynamics/model.h"
+
+namespace walkers {
+
+// A point of the tree: p, v = J q', and a_bias = J' q' so that a = J q'' + a_bias.
+struct PointKinematics {
+  Vec2 p = Vec2::Zero();
+  Vec2 v = Vec2::Zero();
+  Vec2 a_bias = Vec2::Zero();
+  Jac2x9 J = Jac2x9::Zero();
+};
+
+// An absolute body angle. Every angle is linear in q: angle = j q.
+struct AngleKinematics {
+  double angle = 0;
+  double rate = 0;
+  Row9 j = Row9::Zero();
+};
+
+struct LegKinematics {
+  PointKinematics knee;   // end of the femur
+  PointKinematics ankle;  // end of the tibia = centre of the foot
+  AngleKinematics femur;  // absolute angles; 0 = hanging straight down / flat
+  AngleKinematics tibia;
+  AngleKinematics foot;
+};
+
+struct Kinematics {
+  PointKinematics trunk;  // trunk centre
+  PointKinematics hip;    // both hips: bottom centre of the trunk
+  AngleKinematics pitch;  // trunk pitch
+  std::array<LegKinematics, kNumLegs> legs;
+};
+
+// Fills every point and angle for the state (q, v). Use v = 0 for positions only.
+void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinematics* kin);
+
+// A point rigidly attached at `r` (world frame) from `base` to the body of angle `body`:
+// its position, velocity, Jacobian and bias acceleration.
+PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r);
+
+// Unit vector of a segment of absolute angle a, pointing from its top end to
+// its bottom end: (sin a, -cos a).
+inline Vec2 SegmentDirection(double a) { return Vec2(std::sin(a), -std::cos(a)); }
+
+// A body-fixed vector r_local rotated by the body angle a into the world frame.
+inline Vec2 Rotate(double a, const Vec2& r_local) {
+  const double c = std::cos(a), s = std::sin(a);
+  return Vec2(c * r_local.x() - s * r_local.y(), s * r_local.x() + c * r_local.y());
+}
+
+}  // namespace walkers
+
+namespace walkers {
+
+// The walker standing with both feet flat at foot_x on the ground, trunk
+// level, both knees flexed by knee_flexion (split equally between hip and
+// ankle so the trunk stays level), at rest.
+State StandingState(const Model& model, double knee_flexion, double foot_x = 0.0);
+
+}  // namespace walkers

@@ -1,0 +1,29 @@
+#include "dynamics/observation.h"
+
+#include "dynamics/energy.h"
+#include "dynamics/kinematics.h"
+
+namespace walkers {
+
+Observation Observe(const Model& model, const State& state, const Welds& welds) {
+  Kinematics kin;
+  ComputeKinematics(model, state.q, state.v, &kin);
+  Observation o;
+  o.kinetic = KineticEnergy(model, kin);
+  o.potential = PotentialEnergy(model, kin, welds);
+  o.trunk_contact = TrunkTouchesGround(model, kin);
+  o.max_penetration = MaxPenetration(model, kin);
+  return o;
+}
+
+Weld PlantFoot(const Model& model, const State& state, int leg) {
+  Kinematics kin;
+  ComputeKinematics(model, state.q, state.v, &kin);
+  Weld w;
+  w.active = true;
+  w.anchor = Vec2(kin.legs[leg].ankle.p.x(), model.body.half_foot_y);
+  w.angle = 0.0;
+  return w;
+}
+
+}  // namespace walkers
