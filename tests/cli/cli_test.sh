@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Command-line checks: each case runs `walkers` and asserts its exit code and
+# what it prints. Usage: cli_test.sh WALKERS_BINARY SOURCE_DIR
+set -u
+walkers=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+
+# expect CODE PATTERN -- ARGS...: exit code CODE (or "nonzero") and output matching PATTERN
+expect() {
+  local code=$1 pattern=$2
+  shift 3
+  local out rc
+  out=$("$walkers" "$@" 2>&1)
+  rc=$?
+  if [[ $code == nonzero && $rc -eq 0 ]] || [[ $code != nonzero && $rc -ne $code ]]; then
+    echo "FAIL: walkers $* exited $rc, expected $code"; echo "$out" | head -5; failures=$((failures + 1)); return
+  fi
+  if ! grep -Eq -- "$pattern" <<<"$out"; then
+    echo "FAIL: walkers $* printed no match for /$pattern/:"; echo "$out" | head -5; failures=$((failures + 1)); return
+  fi
+  echo "ok: walkers $*"
+}
+
+genome=$src/data/genomes/default.json
+
+# simulate: the JSON summary line and a trajectory with the documented columns
+expect 0 '^\{"cvode_steps":[0-9]+,"failure":null,"rhs_evals":[0-9]+,"sim_time":0\.5,"wall_ms":' -- \
+  simulate --genome "$genome" --duration 0.5 --trajectory "$tmp/t.csv"
+header=$(head -1 "$tmp/t.csv")
+[[ $header == t,x,y,pitch,hip_l,knee_l,ankle_l,hip_r,knee_r,ankle_r,x_dot,*,ankle_r_dot,kinetic,potential,trunk_contact ]] ||
+  { echo "FAIL: trajectory header: $header"; failures=$((failures + 1)); }
+rows=$(($(wc -l <"$tmp/t.csv") - 1))
+[[ $rows -eq 16 ]] || { echo "FAIL: 0.5 s at 30 Hz should give 16 rows (t=0 .. 0.5), got $rows"; failures=$((failures + 1)); }
+expect 0 '"failure":null' -- simulate --genome "$genome" --duration 0.1 --passive
+
+# bad input: a clear message and a non-zero exit
+sed 's/"kStep": [0-9.]*/"kStep": 900/' "$genome" >"$tmp/bad.json"
+expect nonzero "bad.json: gene 'kStep' = 900 is outside its allowed range \[0, 800\]" -- \
+  simulate --genome "$tmp/bad.json" --duration 1
+expect nonzero 'duration' -- simulate --genome "$genome" --duration -1
+expect nonzero 'duration' -- simulate --genome "$genome" --duration nan
+expect nonzero 'genome' -- simulate --genome "$tmp/absent.json" --duration 1
+expect nonzero 'cannot write the trajectory' -- simulate --genome "$genome" --duration 0.1 --trajectory "$tmp/no/such/dir/t.csv"
+expect nonzero 'simulate|Usage|subcommand' --
+
+[[ $failures -eq 0 ]] || { echo "$failures CLI check(s) failed"; exit 1; }
+echo "all CLI checks passed"
