@@ -1,5 +1,7 @@
 #include "dynamics/integrator.h"
 
+#include "dynamics/planting.h"
+
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -93,22 +95,44 @@ void Integrator::Reset(double t0, const State& state, const Inputs& inputs) {
   state_ = state;
   inputs_ = inputs;
   t_ = t0;
-  double* y = N_VGetArrayPointer(cv_->y);
   for (int i = 0; i < kNumCoords; ++i) {
-    y[i] = state.q(i);
-    y[kNumCoords + i] = model_.options.locked[i] ? 0.0 : state.v(i);
+    if (model_.options.locked[i]) state_.v(i) = 0.0;
   }
-  state_.v = Eigen::Map<const Vec9>(y + kNumCoords);
+  CopyStateToVector();
   Check(CVodeReInit(cv_->mem, t0, cv_->y), "CVodeReInit");
   finished_ = IntegratorStats{};
   rhs_evals_ = 0;
   needs_restart_ = false;
   non_finite_ = false;
+  pending_failure_.clear();
 }
 
+namespace {
+
+bool SameWeld(const Weld& a, const Weld& b) {
+  return a.active == b.active && (!a.active || (a.anchor == b.anchor && a.angle == b.angle));
+}
+
+}  // namespace
+
 void Integrator::SetInputs(const Inputs& inputs) {
+  bool welds_changed = false;
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    const Weld& weld = inputs.welds[leg];
+    if (SameWeld(weld, inputs_.welds[leg])) continue;
+    welds_changed = true;
+    if (weld.active && settings_.project_on_plant && !ProjectOntoWeld(model_, weld, leg, &state_)) {
+      pending_failure_ = "projection onto the weld of the " + std::string(leg == kLeft ? "left" : "right") +
+                         " foot did not converge at t=" + std::to_string(t_);
+    }
+  }
+  if (welds_changed) {
+    // the state may have jumped: hand it to CVODE at the restart
+    CopyStateToVector();
+  }
+  const bool torques_changed = inputs.joint_torque != inputs_.joint_torque;
   inputs_ = inputs;
-  if (settings_.restart_on_input_change) needs_restart_ = true;
+  if (welds_changed || (torques_changed && settings_.restart_on_torque_change)) needs_restart_ = true;
 }
 
 IntegratorStats Integrator::stats() const {
@@ -128,6 +152,11 @@ IntegratorStats Integrator::stats() const {
 
 IntegrationStatus Integrator::AdvanceTo(double t) {
   IntegrationStatus status;
+  if (!pending_failure_.empty()) {
+    status.failure = IntegrationFailure::kSolver;
+    status.reason = pending_failure_;
+    return status;
+  }
   if (!(t > t_)) return status;
 
   if (needs_restart_) {
@@ -171,6 +200,13 @@ IntegrationStatus Integrator::AdvanceTo(double t) {
     if (!last_cvode_message_.empty()) status.reason += ": " + last_cvode_message_;
   }
   return status;
+}
+
+void Integrator::CopyStateToVector() {
+  double* y = N_VGetArrayPointer(cv_->y);
+  Eigen::Map<Vec9> q(y), v(y + kNumCoords);
+  q = state_.q;
+  v = state_.v;
 }
 
 void Integrator::CopyStateFromVector() {

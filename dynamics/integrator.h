@@ -21,9 +21,15 @@ struct IntegratorSettings {
   double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
   int max_order = 5;                          // BDF: 1..5, Adams: 1..12
   bool stability_limit_detection = false;
-  // Restart CVODE (back to order 1) whenever the held inputs change: they
-  // change the right-hand side discontinuously.
-  bool restart_on_input_change = true;
+  // Restart CVODE (back to order 1) whenever the held joint torques change.
+  // AdvanceTo never steps past a point where they may change, but without a
+  // restart CVODE's history still holds the old accelerations: at tight
+  // tolerances its error test then fails at the jump. Switching a weld
+  // always restarts.
+  bool restart_on_torque_change = true;
+  // Switching a weld on projects the state onto it (ProjectOntoWeld): the foot
+  // lands as a plastic impact instead of being yanked by the stiff weld.
+  bool project_on_plant = true;
   long step_budget = 1000000;  // steps allowed since the last Reset
 };
 
@@ -54,7 +60,8 @@ class Integrator {
   // Starts a new trajectory at (t0, state) holding `inputs`; clears the stats.
   void Reset(double t0, const State& state, const Inputs& inputs = {});
 
-  // Replaces the held inputs from the current time on.
+  // Replaces the held inputs from the current time on. A weld switched on (or
+  // moved) projects the state onto it when settings.project_on_plant.
   void SetInputs(const Inputs& inputs);
 
   // Integrates from the current time to t (> current time). On failure the
@@ -71,6 +78,7 @@ class Integrator {
   friend struct CvodeCallbacks;
   // y' = f(y) for y = (q, v); false when the accelerations are not finite
   bool EvaluateRightHandSide(const double* y, double* ydot);
+  void CopyStateToVector();
   void CopyStateFromVector();
 
   Model model_;
@@ -81,6 +89,7 @@ class Integrator {
   double t_ = 0;
   bool needs_restart_ = false;
   bool non_finite_ = false;
+  std::string pending_failure_;  // a failed projection, reported by the next AdvanceTo
   std::string last_cvode_message_;
   IntegratorStats finished_;  // stats of CVODE runs before the last restart
   long rhs_evals_ = 0;

@@ -207,7 +207,8 @@ TEST(IntegratorTest, CountsStepsAndRightHandSidesAcrossRestarts) {
   integrator.Reset(0.0, start, inputs);
   ASSERT_TRUE(integrator.AdvanceTo(0.5).ok());
   const IntegratorStats first = integrator.stats();
-  integrator.SetInputs(inputs);  // a restart
+  inputs.welds[kLeft].active = false;
+  integrator.SetInputs(inputs);  // a weld switched: a restart
   ASSERT_TRUE(integrator.AdvanceTo(1.0).ok());
   const IntegratorStats second = integrator.stats();
   EXPECT_GT(first.steps, 0);
