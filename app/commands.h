@@ -13,5 +13,6 @@ namespace walkers::app {
 using Command = std::function<int()>;
 
 void AddSimulateCommand(CLI::App& app, Command* selected);
+void AddEvaluateCommand(CLI::App& app, Command* selected);
 
 }  // namespace walkers::app

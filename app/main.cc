@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
 
   walkers::app::Command selected;
   walkers::app::AddSimulateCommand(app, &selected);
+  walkers::app::AddEvaluateCommand(app, &selected);
 
   try {
     app.parse(argc, argv);

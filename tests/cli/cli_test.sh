@@ -36,6 +36,16 @@ rows=$(($(wc -l <"$tmp/t.csv") - 1))
 [[ $rows -eq 16 ]] || { echo "FAIL: 0.5 s at 30 Hz should give 16 rows (t=0 .. 0.5), got $rows"; failures=$((failures + 1)); }
 expect 0 '"failure":null' -- simulate --genome "$genome" --duration 0.1 --passive
 
+# evaluate: the JSON keys of the issue, and a trajectory with the controller's columns
+expect 0 '^\{"cvode_steps":[0-9]+,"distance":[-0-9.e]+,"failure":null,"fell":false,"fitness":[-0-9.e]+,"footsteps":[0-9]+,"gait":"(biped|tripod)","leg_length":[0-9.]+,"preset":"original","rhs_evals":[0-9]+,"sim_time":15(\.0)?,"trunk_contact_fraction":[0-9.e-]+,"wall_ms":[0-9.e+-]+\}$' -- \
+  evaluate --genome "$genome" --json --trajectory "$tmp/e.csv"
+header=$(head -1 "$tmp/e.csv")
+[[ $header == t,x,y,*,kinetic,potential,trunk_contact,state,x_target ]] ||
+  { echo "FAIL: evaluate trajectory header: $header"; failures=$((failures + 1)); }
+grep -q ',DS,' "$tmp/e.csv" && grep -Eq ',(LS|RS),' "$tmp/e.csv" ||
+  { echo "FAIL: evaluate trajectory has no DS and LS/RS states"; failures=$((failures + 1)); }
+expect 0 '^fitness [-0-9.]+ +\(distance' -- evaluate --genome "$genome" --preset paper
+
 # bad input: a clear message and a non-zero exit
 sed 's/"kStep": [0-9.]*/"kStep": 900/' "$genome" >"$tmp/bad.json"
 expect nonzero "bad.json: gene 'kStep' = 900 is outside its allowed range \[0, 800\]" -- \
@@ -44,6 +54,8 @@ expect nonzero 'duration' -- simulate --genome "$genome" --duration -1
 expect nonzero 'duration' -- simulate --genome "$genome" --duration nan
 expect nonzero 'genome' -- simulate --genome "$tmp/absent.json" --duration 1
 expect nonzero 'cannot write the trajectory' -- simulate --genome "$genome" --duration 0.1 --trajectory "$tmp/no/such/dir/t.csv"
+expect nonzero 'preset.*(paper|original)' -- evaluate --genome "$genome" --preset authors
+expect nonzero "bad.json: gene 'kStep'" -- evaluate --genome "$tmp/bad.json"
 expect nonzero 'simulate|Usage|subcommand' --
 
 [[ $failures -eq 0 ]] || { echo "$failures CLI check(s) failed"; exit 1; }

@@ -1,0 +1,57 @@
+// One evaluation of a genome: 15 s of walking under the state machine, scored
+// by paper eq. (6). Pure: the same genome, preset and settings give
+// bit-identical results (but for wall_ms) on any thread.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "control/genome.h"
+#include "control/preset.h"
+#include "control/walking_controller.h"
+#include "dynamics/integrator.h"
+
+namespace walkers {
+
+enum class Gait { kBiped, kTripod };
+
+// "biped", "tripod"
+const char* GaitName(Gait gait);
+
+// A walker whose trunk touches the ground in at least this fraction of the
+// ticks after the lock is a tripod (docs/model.md gives the reasons).
+constexpr double kTripodContactFraction = 0.25;
+
+struct EvaluationSettings {
+  double duration = 15.0;  // [s]
+  IntegratorSettings integrator;
+  ContactParameters contact;
+  WeldParameters weld;
+};
+
+struct EvaluationResult {
+  double fitness = -1;         // paper eq. (6): distance / leg length; -1 for a fall or a failure
+  double distance = 0;         // [m] min(x_footL, x_footR) when the evaluation ended
+  double leg_length = 0;       // [m] tibia + femur
+  bool fell = false;
+  std::string failure;         // integration failure's reason, empty if none
+  int footsteps = 0;           // touchdowns
+  double trunk_contact_fraction = 0;  // of the 30 Hz ticks after the lock
+  Gait gait = Gait::kBiped;
+  double sim_time = 0;         // [s] simulated
+  double wall_ms = 0;          // [ms] wall time (not deterministic)
+  long cvode_steps = 0;
+  long rhs_evals = 0;
+  IntegratorStats integrator_stats;  // every CVODE counter
+  double max_weld_drift = 0;   // [m] furthest a planted foot's centre moved from its weld, at ticks
+  std::string preset;
+};
+
+// Called at every controller tick (after the controller decided) and once at
+// the end, with the time, the walker's state and the controller.
+using TickObserver = std::function<void(double t, const State& state, const WalkingController& controller)>;
+
+EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const EvaluationSettings& settings = {},
+                          const TickObserver& observer = nullptr);
+
+}  // namespace walkers

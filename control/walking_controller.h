@@ -1,0 +1,62 @@
+// The walking state machine of paper §2.3 / MODEL.md §4: double support, left
+// support, right support; virtual model control of the stance legs, the swing
+// hip spring, and planting and unplanting feet through the dynamics' welds.
+// It runs at 30 Hz; its torques are held between ticks.
+#pragma once
+
+#include "control/genome.h"
+#include "control/preset.h"
+#include "control/vmc.h"
+#include "dynamics/equations_of_motion.h"
+#include "dynamics/model.h"
+
+namespace walkers {
+
+enum class WalkingState { kDoubleSupport, kLeftSupport, kRightSupport };
+
+// "DS", "LS", "RS"
+const char* WalkingStateName(WalkingState state);
+
+constexpr double kLockDuration = 2.0;       // [s] held in double support at the start
+constexpr double kOnFloorMargin = 0.031;    // [m] ankle below halfFootY + this: foot on the floor
+constexpr double kTouchdownMargin = 0.001;  // [m] swing ankle below halfFootY + this: touchdown
+constexpr double kFirstStepLength = 0.01;   // [m] the first step must reach this far ahead of the stance ankle
+constexpr double kStepLength = 0.04;        // [m] later steps
+constexpr double kTargetLead = 0.8;         // [m] bunny target ahead of the feet's midpoint
+
+// The preset's "stable" rule: may the walker leave double support?
+bool IsStable(const Genome& genome, const Preset& preset, const State& state);
+
+// The preset's fall rule: the trunk centre below a fraction of the standing height.
+bool HasFallen(const Genome& genome, const Preset& preset, const State& state);
+
+class WalkingController {
+ public:
+  WalkingController(const Genome& genome, const Model& model, const Preset& preset);
+
+  // Both feet planted where they stand, no torques, double support, x_d = 0.
+  const Inputs& Start(const State& state);
+
+  // One controller tick at time t: updates the state machine from the
+  // walker's state and returns the inputs to hold until the next tick.
+  const Inputs& Tick(double t, const State& state);
+
+  WalkingState state() const { return state_; }
+  double x_target() const { return x_target_; }
+  int footsteps() const { return footsteps_; }
+  const Inputs& inputs() const { return inputs_; }
+
+ private:
+  void UpdateState(double t, const State& state, const Kinematics& kin);
+  void UpdateTorques(const State& state, const Kinematics& kin);
+
+  Genome genome_;
+  Model model_;
+  Preset preset_;
+  WalkingState state_ = WalkingState::kDoubleSupport;
+  double x_target_ = 0.0;
+  int footsteps_ = 0;
+  Inputs inputs_;
+};
+
+}  // namespace walkers

@@ -1,0 +1,83 @@
+#include "control/evaluation.h"
+
+#include <thread>
+
+#include <gtest/gtest.h>
+
+namespace walkers {
+namespace {
+
+// every field but the wall time, bit for bit
+void ExpectIdentical(const EvaluationResult& a, const EvaluationResult& b) {
+  EXPECT_EQ(a.fitness, b.fitness);
+  EXPECT_EQ(a.distance, b.distance);
+  EXPECT_EQ(a.fell, b.fell);
+  EXPECT_EQ(a.failure, b.failure);
+  EXPECT_EQ(a.footsteps, b.footsteps);
+  EXPECT_EQ(a.trunk_contact_fraction, b.trunk_contact_fraction);
+  EXPECT_EQ(a.gait, b.gait);
+  EXPECT_EQ(a.sim_time, b.sim_time);
+  EXPECT_EQ(a.cvode_steps, b.cvode_steps);
+  EXPECT_EQ(a.rhs_evals, b.rhs_evals);
+}
+
+TEST(EvaluationTest, TheDefaultGenomeWalksForward) {
+  const EvaluationResult r = Evaluate(DefaultGenome(), OriginalPreset());
+  EXPECT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_FALSE(r.fell);
+  EXPECT_GE(r.footsteps, 4);
+  EXPECT_GT(r.fitness, 0.0);
+  EXPECT_DOUBLE_EQ(r.sim_time, 15.0);
+  EXPECT_DOUBLE_EQ(r.fitness, r.distance / r.leg_length);
+  EXPECT_EQ(r.preset, "original");
+  EXPECT_GT(r.cvode_steps, 0);
+  // its planted feet stay put under the VMC loads (MODEL.md §3)
+  EXPECT_LT(r.max_weld_drift, 1e-3);
+}
+
+TEST(EvaluationTest, IsBitIdenticalTwiceAndOnAnotherThread) {
+  const Genome g = DefaultGenome();
+  const EvaluationResult first = Evaluate(g, OriginalPreset());
+  const EvaluationResult second = Evaluate(g, OriginalPreset());
+  EvaluationResult threaded;
+  std::thread worker([&] { threaded = Evaluate(g, OriginalPreset()); });
+  worker.join();
+  ExpectIdentical(first, second);
+  ExpectIdentical(first, threaded);
+}
+
+TEST(EvaluationTest, AWalkerWithAWeakVerticalSpringFallsAndScoresMinusOne) {
+  Genome g = DefaultGenome();
+  g[kKy] = 3000.0;        // the floor: it cannot hold the trunk up...
+  g[kHalfBodyX] = 0.1;    // ...and a short trunk cannot lean on the ground as a tripod
+  for (const Preset& preset : {OriginalPreset(), PaperPreset()}) {
+    const EvaluationResult r = Evaluate(g, preset);
+    EXPECT_TRUE(r.fell) << preset.name;
+    EXPECT_EQ(r.fitness, -1.0) << preset.name;
+    EXPECT_LT(r.sim_time, 15.0) << preset.name;
+  }
+}
+
+TEST(EvaluationTest, ReportsAnIntegrationFailureAsMinusOneWithItsReason) {
+  EvaluationSettings settings;
+  settings.integrator.step_budget = 100;
+  const EvaluationResult r = Evaluate(DefaultGenome(), OriginalPreset(), settings);
+  EXPECT_EQ(r.fitness, -1.0);
+  EXPECT_NE(r.failure.find("step budget"), std::string::npos) << r.failure;
+  EXPECT_FALSE(r.fell);
+}
+
+TEST(EvaluationTest, ObserverSeesEveryTickAndTheEnd) {
+  int calls = 0;
+  double last_t = -1.0;
+  Evaluate(DefaultGenome(), OriginalPreset(), {}, [&](double t, const State&, const WalkingController&) {
+    EXPECT_GE(t, last_t);
+    last_t = t;
+    ++calls;
+  });
+  EXPECT_EQ(calls, 451);  // ticks at 0, 1/30, ..., 449/30, and the end at 15 s
+  EXPECT_DOUBLE_EQ(last_t, 15.0);
+}
+
+}  // namespace
+}  // namespace walkers
