@@ -29,22 +29,17 @@ ContactSample CornerSample(const PointKinematics& base, const AngleKinematics& b
   return s;
 }
 
-// the (base, body, offset) that carries each contact point
-struct Carrier {
-  const PointKinematics* base;
-  const AngleKinematics* body;
-  Vec2 r;
-};
+}  // namespace
 
-std::array<Carrier, kNumContactPoints> Carriers(const Model& model, const Kinematics& kin) {
-  std::array<Carrier, kNumContactPoints> out;
+std::array<ContactCarrier, kNumContactPoints> ContactCarriers(const Model& model, const Kinematics& kin) {
+  std::array<ContactCarrier, kNumContactPoints> out;
   const auto trunk = BoxCorners(model.body.half_body_x, model.body.half_body_y);
   const auto foot = BoxCorners(model.body.half_foot_x, model.body.half_foot_y);
   for (int i = 0; i < 4; ++i) {
-    out[kTrunkCorner0 + i] = {&kin.trunk, &kin.pitch, Rotate(kin.pitch.angle, trunk[i])};
+    out[kTrunkCorner0 + i] = {&kin.trunk, &kin.pitch, Rotate(kin.pitch, trunk[i])};
     for (int leg = 0; leg < kNumLegs; ++leg) {
       const LegKinematics& l = kin.legs[leg];
-      out[kFootCorner0L + 4 * leg + i] = {&l.ankle, &l.foot, Rotate(l.foot.angle, foot[i])};
+      out[kFootCorner0L + 4 * leg + i] = {&l.ankle, &l.foot, Rotate(l.foot, foot[i])};
     }
   }
   for (int leg = 0; leg < kNumLegs; ++leg) {
@@ -53,8 +48,6 @@ std::array<Carrier, kNumContactPoints> Carriers(const Model& model, const Kinema
   }
   return out;
 }
-
-}  // namespace
 
 Vec2 GroundForce(const ContactParameters& c, double depth, double depth_rate, double slip) {
   if (depth <= 0.0) return Vec2::Zero();
@@ -67,7 +60,7 @@ Vec2 GroundForce(const ContactParameters& c, double depth, double depth_rate, do
 
 std::array<ContactSample, kNumContactPoints> SampleContacts(const Model& model, const Kinematics& kin) {
   std::array<ContactSample, kNumContactPoints> out;
-  const auto carriers = Carriers(model, kin);
+  const auto carriers = ContactCarriers(model, kin);
   for (int i = 0; i < kNumContactPoints; ++i) {
     out[i] = CornerSample(*carriers[i].base, *carriers[i].body, carriers[i].r);
   }
@@ -75,13 +68,11 @@ std::array<ContactSample, kNumContactPoints> SampleContacts(const Model& model, 
 }
 
 void AddGroundContactForces(const Model& model, const Kinematics& kin, Vec9* Q) {
-  const auto carriers = Carriers(model, kin);
-  const auto samples = SampleContacts(model, kin);
-  for (int i = 0; i < kNumContactPoints; ++i) {
-    const ContactSample& s = samples[i];
-    if (s.depth <= 0.0) continue;
+  for (const ContactCarrier& carrier : ContactCarriers(model, kin)) {
+    if (carrier.base->p.y() + carrier.r.y() >= 0.0) continue;  // above the ground
+    const ContactSample s = CornerSample(*carrier.base, *carrier.body, carrier.r);
     const Vec2 f = GroundForce(model.contact, s.depth, s.depth_rate, s.v.x());
-    ApplyForce(*carriers[i].base, *carriers[i].body, carriers[i].r, f, Q);
+    ApplyForce(*carrier.base, *carrier.body, carrier.r, f, Q);
   }
 }
 

@@ -22,6 +22,19 @@ enum ContactPoint : int {
   kNumContactPoints = 14
 };
 
+// What carries a contact point: a point of the tree, the body angle the
+// point turns with, and the world-frame offset from that point. A box corner
+// turns with its box; a knee circle's lowest point sits straight below the
+// knee (offset (0, -R)) and moves with the femur.
+struct ContactCarrier {
+  const PointKinematics* base;
+  const AngleKinematics* body;
+  Vec2 r;
+};
+std::array<ContactCarrier, kNumContactPoints> ContactCarriers(const Model& model, const Kinematics& kin);
+
+inline bool IsKneeCircle(int contact_point) { return contact_point >= kKneeCircleL; }
+
 // Where a contact point is and how fast it goes into the ground.
 struct ContactSample {
   Vec2 p = Vec2::Zero();  // contact point (a corner, or the circle's lowest point)

@@ -1,14 +1,43 @@
 #include "dynamics/equations_of_motion.h"
 
+#include <array>
+
 namespace walkers {
 namespace {
 
-void AddPointMass(double m, const PointKinematics& p, Mat9* M) {
-  M->noalias() += m * p.J.transpose() * p.J;
+// Columns of q a point or an angle depends on: the trunk's (x, y, pitch) and
+// one leg's joints. Products over these alone keep M's assembly cheap.
+template <size_t N>
+using Support = std::array<int, N>;
+constexpr Support<2> kTrunkSupport = {kX, kY};
+constexpr Support<3> kHipSupport = {kX, kY, kPitch};
+constexpr Support<6> LegSupport(int leg) {
+  return {kX, kY, kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)};
+}
+constexpr Support<4> LegAngleSupport(int leg) {
+  return {kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)};
 }
 
-void AddInertia(double inertia, const AngleKinematics& a, Mat9* M) {
-  M->noalias() += inertia * a.j.transpose() * a.j;
+// upper triangle of m J^T J over the point's support
+template <size_t N>
+void AddPointMass(double m, const PointKinematics& p, const Support<N>& cols, Mat9* M) {
+  for (size_t a = 0; a < N; ++a) {
+    const int i = cols[a];
+    const double mx = m * p.J(0, i), my = m * p.J(1, i);
+    for (size_t b = a; b < N; ++b) {
+      const int k = cols[b];
+      (*M)(i, k) += mx * p.J(0, k) + my * p.J(1, k);
+    }
+  }
+}
+
+// upper triangle of I j^T j over the angle's support
+template <size_t N>
+void AddInertia(double inertia, const AngleKinematics& angle, const Support<N>& cols, Mat9* M) {
+  for (size_t a = 0; a < N; ++a) {
+    const double ij = inertia * angle.j(cols[a]);
+    for (size_t b = a; b < N; ++b) (*M)(cols[a], cols[b]) += ij * angle.j(cols[b]);
+  }
 }
 
 // gravity and velocity-product forces of a point mass: J^T m (g - a_bias)
@@ -21,16 +50,19 @@ void AddPointMassForces(double m, double gravity, const PointKinematics& p, Vec9
 
 void MassMatrix(const Model& model, const Kinematics& kin, Mat9* M) {
   M->setZero();
-  AddPointMass(model.trunk_mass, kin.trunk, M);
-  AddPointMass(model.hips_mass, kin.hip, M);
-  AddInertia(model.trunk_inertia, kin.pitch, M);
-  for (const LegKinematics& leg : kin.legs) {
-    AddPointMass(model.knee_mass, leg.knee, M);
-    AddPointMass(model.ankle_mass, leg.ankle, M);
-    AddInertia(model.femur_inertia, leg.femur, M);
-    AddInertia(model.tibia_inertia, leg.tibia, M);
-    AddInertia(model.foot_inertia, leg.foot, M);
+  AddPointMass(model.trunk_mass, kin.trunk, kTrunkSupport, M);
+  AddPointMass(model.hips_mass, kin.hip, kHipSupport, M);
+  (*M)(kPitch, kPitch) += model.trunk_inertia;
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    const LegKinematics& l = kin.legs[leg];
+    AddPointMass(model.knee_mass, l.knee, LegSupport(leg), M);
+    AddPointMass(model.ankle_mass, l.ankle, LegSupport(leg), M);
+    AddInertia(model.femur_inertia, l.femur, LegAngleSupport(leg), M);
+    AddInertia(model.tibia_inertia, l.tibia, LegAngleSupport(leg), M);
+    AddInertia(model.foot_inertia, l.foot, LegAngleSupport(leg), M);
   }
+  // the lower triangle mirrors the upper
+  *M = M->selfadjointView<Eigen::Upper>();
 }
 
 Mat9 MassMatrix(const Model& model, const Vec9& q) {

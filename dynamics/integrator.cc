@@ -1,5 +1,6 @@
 #include "dynamics/integrator.h"
 
+#include "dynamics/jacobian.h"
 #include "dynamics/planting.h"
 
 #include <cvode/cvode.h>
@@ -37,6 +38,13 @@ struct CvodeCallbacks {
   static int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* self) {
     // a non-finite result is unrecoverable: CVODE stops with CV_RHSFUNC_FAIL
     return static_cast<Integrator*>(self)->EvaluateRightHandSide(N_VGetArrayPointer(y), N_VGetArrayPointer(ydot))
+               ? 0
+               : -1;
+  }
+  static int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jacobian, void* self,
+                      N_Vector /*tmp1*/, N_Vector /*tmp2*/, N_Vector /*tmp3*/) {
+    return static_cast<Integrator*>(self)->EvaluateJacobian(N_VGetArrayPointer(y),
+                                                            SUNDenseMatrix_Data(jacobian))
                ? 0
                : -1;
   }
@@ -87,6 +95,9 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
   cv_->linear_solver = SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context);
   if (!cv_->jacobian || !cv_->linear_solver) throw std::runtime_error("CVODE setup failed: dense solver");
   Check(CVodeSetLinearSolver(cv_->mem, cv_->linear_solver, cv_->jacobian), "CVodeSetLinearSolver");
+  if (settings.jacobian == JacobianSource::kAnalytic) {
+    Check(CVodeSetJacFn(cv_->mem, &CvodeCallbacks::Jacobian), "CVodeSetJacFn");
+  }
 }
 
 Integrator::~Integrator() = default;
@@ -226,6 +237,22 @@ bool Integrator::EvaluateRightHandSide(const double* y, double* ydot) {
   }
   qd = v;
   vd = qdd;
+  return true;
+}
+
+bool Integrator::EvaluateJacobian(const double* y, double* jacobian) {
+  const Eigen::Map<const Vec9> q(y), v(y + kNumCoords);
+  Mat9 da_dq, da_dv;
+  if (!AccelerationJacobian(model_, inputs_, q, v, &workspace_, &da_dq, &da_dv)) {
+    non_finite_ = true;
+    return false;
+  }
+  // d(q, v)'/d(q, v) = [[0, I], [da/dq, da/dv]], column-major
+  Eigen::Map<Eigen::Matrix<double, kStateSize, kStateSize>> J(jacobian);
+  J.setZero();
+  J.topRightCorner<kNumCoords, kNumCoords>().setIdentity();
+  J.bottomLeftCorner<kNumCoords, kNumCoords>() = da_dq;
+  J.bottomRightCorner<kNumCoords, kNumCoords>() = da_dv;
   return true;
 }
 

@@ -14,12 +14,19 @@ namespace walkers {
 
 enum class MultistepMethod { kBdf, kAdams };
 
+// Where CVODE's Newton iteration gets the Jacobian of the right-hand side.
+enum class JacobianSource {
+  kAnalytic,          // AccelerationJacobian (dynamics/jacobian.h)
+  kFiniteDifference,  // CVODE's own difference quotients: 18 right-hand sides each
+};
+
 struct IntegratorSettings {
   MultistepMethod method = MultistepMethod::kBdf;
   double relative_tolerance = 1e-6;           // [-]
   double absolute_tolerance_position = 1e-6;  // [m, rad]
   double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
   int max_order = 5;                          // BDF: 1..5, Adams: 1..12
+  JacobianSource jacobian = JacobianSource::kAnalytic;
   bool stability_limit_detection = false;
   // Restart CVODE (back to order 1) whenever the held joint torques change.
   // AdvanceTo never steps past a point where they may change, but without a
@@ -78,6 +85,8 @@ class Integrator {
   friend struct CvodeCallbacks;
   // y' = f(y) for y = (q, v); false when the accelerations are not finite
   bool EvaluateRightHandSide(const double* y, double* ydot);
+  // the 18x18 Jacobian of the right-hand side, column-major into `jacobian`
+  bool EvaluateJacobian(const double* y, double* jacobian);
   void CopyStateToVector();
   void CopyStateFromVector();
 

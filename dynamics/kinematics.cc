@@ -10,19 +10,22 @@ AngleKinematics MakeAngle(const Row9& j, const Vec9& q, const Vec9& v) {
   a.j = j;
   a.angle = j.dot(q);
   a.rate = j.dot(v);
+  a.c = std::cos(a.angle);
+  a.s = std::sin(a.angle);
   return a;
 }
 
 }  // namespace
 
 PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r) {
-  // p = p_base + r(angle): dr/dangle = perp(r) = (-r_y, r_x), d2r/dangle2 = -r
-  const Vec2 perp(-r.y(), r.x());
-  PointKinematics out;
-  out.p = base.p + r;
-  out.v = base.v + perp * body.rate;
-  out.a_bias = base.a_bias - r * (body.rate * body.rate);
-  out.J = base.J + perp * body.j;
+  // p = p_base + r(angle): dr/dangle = perp(r), d2r/dangle2 = -r
+  const Vec2 perp = Perp(r);
+  PointKinematics out = base;
+  out.p += r;
+  out.v += perp * body.rate;
+  out.a_bias -= r * (body.rate * body.rate);
+  out.J.noalias() += perp * body.j;
+  out.links[out.num_links++] = {r, &body};
   return out;
 }
 
@@ -42,7 +45,8 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
   kin->pitch = MakeAngle(j, q, v);
 
   // hips at (0, -half_body_y) in the trunk frame
-  kin->hip = OffsetPoint(kin->trunk, kin->pitch, Rotate(kin->pitch.angle, Vec2(0.0, -b.half_body_y)));
+  kin->trunk.num_links = 0;
+  kin->hip = OffsetPoint(kin->trunk, kin->pitch, Rotate(kin->pitch, Vec2(0.0, -b.half_body_y)));
 
   for (int leg = 0; leg < kNumLegs; ++leg) {
     LegKinematics& l = kin->legs[leg];
@@ -57,8 +61,8 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
     l.tibia = MakeAngle(j_tibia, q, v);
     l.foot = MakeAngle(j_foot, q, v);
 
-    l.knee = OffsetPoint(kin->hip, l.femur, b.femur_length * SegmentDirection(l.femur.angle));
-    l.ankle = OffsetPoint(l.knee, l.tibia, b.tibia_length * SegmentDirection(l.tibia.angle));
+    l.knee = OffsetPoint(kin->hip, l.femur, b.femur_length * SegmentDirection(l.femur));
+    l.ankle = OffsetPoint(l.knee, l.tibia, b.tibia_length * SegmentDirection(l.tibia));
   }
 }
 

@@ -3,25 +3,38 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 
 #include "dynamics/coords.h"
 #include "dynamics/model.h"
 
 namespace walkers {
 
-// A point of the tree: p, v = J q', and a_bias = J' q' so that a = J q'' + a_bias.
-struct PointKinematics {
-  Vec2 p = Vec2::Zero();
-  Vec2 v = Vec2::Zero();
-  Vec2 a_bias = Vec2::Zero();
-  Jac2x9 J = Jac2x9::Zero();
-};
-
 // An absolute body angle. Every angle is linear in q: angle = j q.
 struct AngleKinematics {
   double angle = 0;
   double rate = 0;
+  double c = 1, s = 0;  // cos and sin of the angle
   Row9 j = Row9::Zero();
+};
+
+// A point of the tree: p, v = J q', and a_bias = J' q' so that a = J q'' + a_bias.
+// It is the trunk centre (x, y) plus a chain of links r_k, each rigid with one
+// absolute angle (dr_k / dangle_k = perp(r_k)); the analytic Jacobian of the
+// equations of motion reads the chain.
+struct PointKinematics {
+  static constexpr int kMaxLinks = 4;
+  struct Link {
+    Vec2 r = Vec2::Zero();                 // world-frame link vector
+    const AngleKinematics* body = nullptr;  // the angle it turns with
+  };
+
+  Vec2 p = Vec2::Zero();
+  Vec2 v = Vec2::Zero();
+  Vec2 a_bias = Vec2::Zero();
+  Jac2x9 J = Jac2x9::Zero();
+  int num_links = 0;
+  std::array<Link, kMaxLinks> links{};
 };
 
 struct LegKinematics {
@@ -49,12 +62,15 @@ PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& 
 // Unit vector of a segment of absolute angle a, pointing from its top end to
 // its bottom end: (sin a, -cos a).
 inline Vec2 SegmentDirection(double a) { return Vec2(std::sin(a), -std::cos(a)); }
+inline Vec2 SegmentDirection(const AngleKinematics& body) { return Vec2(body.s, -body.c); }
 
-// A body-fixed vector r_local rotated by the body angle a into the world frame.
-inline Vec2 Rotate(double a, const Vec2& r_local) {
-  const double c = std::cos(a), s = std::sin(a);
-  return Vec2(c * r_local.x() - s * r_local.y(), s * r_local.x() + c * r_local.y());
+// A body-fixed vector r_local rotated by the body's angle into the world frame.
+inline Vec2 Rotate(const AngleKinematics& body, const Vec2& r_local) {
+  return Vec2(body.c * r_local.x() - body.s * r_local.y(), body.s * r_local.x() + body.c * r_local.y());
 }
+
+// perp(r) = (-r_y, r_x) = dr/dangle for a vector turning with an angle.
+inline Vec2 Perp(const Vec2& r) { return Vec2(-r.y(), r.x()); }
 
 }  // namespace walkers
 

@@ -1,0 +1,27 @@
+// The analytic Jacobian of the equations of motion, for CVODE's Newton
+// iteration: with a = q'' = M(q)^-1 Q(q, v),
+//   M da/dq = d(Q - M a)/dq at fixed a,   M da/dv = dQ/dv.
+// Every generalized force is a force F at a point p of the tree, J^T F, whose
+// derivative in the planar tree is sum_k j_k^T j_k (-r_k . F) + J^T dF/dq over
+// the point's links r_k (tests/dynamics/jacobian_test.cc checks it against
+// finite differences).
+#pragma once
+
+#include "dynamics/equations_of_motion.h"
+
+namespace walkers {
+
+// (d/dq, d/dv) of a point's velocity J v: d(Jv)/dq = sum_k -r_k w_k j_k.
+Jac2x9 PointVelocityJacobian(const PointKinematics& p);
+
+// Partial derivatives of GroundForce's (tangential, normal) with respect to
+// (depth, depth_rate, slip).
+Eigen::Matrix<double, 2, 3> GroundForceDerivatives(const ContactParameters& c, double depth, double depth_rate,
+                                                   double slip);
+
+// da/dq and da/dv at (q, v). Runs ForwardDynamics on the workspace first.
+// Returns false if the accelerations are not finite.
+bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& q, const Vec9& v, Workspace* ws,
+                          Mat9* da_dq, Mat9* da_dv);
+
+}  // namespace walkers
