@@ -5,6 +5,7 @@
 #include "control/start_pose.h"
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/integrator.h"
+#include "dynamics/jacobian.h"
 #include "dynamics/observation.h"
 
 namespace walkers {
@@ -63,6 +64,16 @@ BENCHMARK_F(PlantedWalker, RightHandSide)(benchmark::State& st) {
   for (auto _ : st) {
     benchmark::DoNotOptimize(ForwardDynamics(model_, inputs_, state_.q, state_.v, &workspace_, &qdd));
     benchmark::DoNotOptimize(qdd);
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
+// da/dq and da/dv, analytic (including the forward dynamics it starts from)
+BENCHMARK_F(PlantedWalker, AccelerationJacobian)(benchmark::State& st) {
+  Mat9 da_dq, da_dv;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(AccelerationJacobian(model_, inputs_, state_.q, state_.v, &workspace_, &da_dq, &da_dv));
+    benchmark::DoNotOptimize(da_dq);
   }
   st.SetItemsProcessed(st.iterations());
 }

@@ -109,9 +109,10 @@ bool ForwardDynamics(const Model& model, const Inputs& inputs, const Vec9& q, co
     ws->Q(i) = 0.0;
   }
 
-  ws->llt.compute(ws->M);
-  *qdd = ws->llt.solve(ws->Q);
-  return ws->llt.info() == Eigen::Success && qdd->allFinite();
+  if (!ws->cholesky.Compute(ws->M)) return false;
+  *qdd = ws->Q;
+  ws->cholesky.SolveInPlace(qdd);
+  return qdd->allFinite();
 }
 
 }  // namespace walkers

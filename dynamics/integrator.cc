@@ -2,6 +2,7 @@
 
 #include "dynamics/jacobian.h"
 #include "dynamics/planting.h"
+#include "dynamics/schur_linear_solver.h"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -9,6 +10,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace walkers {
@@ -89,10 +91,11 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
   Check(CVodeSetStabLimDet(cv_->mem, settings.stability_limit_detection ? SUNTRUE : SUNFALSE),
         "CVodeSetStabLimDet");
 
-  // Newton iteration (CVODE's default) with a dense direct linear solver and
-  // CVODE's finite-difference Jacobian
+  // Newton iteration (CVODE's default) with a direct solver on a dense matrix
   cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);
-  cv_->linear_solver = SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context);
+  cv_->linear_solver = settings.linear_solver == LinearSolver::kSchurComplement
+                           ? MakeSchurLinearSolver(cv_->y, cv_->jacobian, cv_->context)
+                           : SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context);
   if (!cv_->jacobian || !cv_->linear_solver) throw std::runtime_error("CVODE setup failed: dense solver");
   Check(CVodeSetLinearSolver(cv_->mem, cv_->linear_solver, cv_->jacobian), "CVodeSetLinearSolver");
   if (settings.jacobian == JacobianSource::kAnalytic) {
@@ -144,6 +147,17 @@ void Integrator::SetInputs(const Inputs& inputs) {
   const bool torques_changed = inputs.joint_torque != inputs_.joint_torque;
   inputs_ = inputs;
   if (welds_changed || (torques_changed && settings_.restart_on_torque_change)) needs_restart_ = true;
+  if (welds_changed || torques_changed) restarted_since_inputs_changed_ = false;
+}
+
+void Integrator::Restart() {
+  // CVodeReInit clears CVODE's counters: keep what they held
+  const IntegratorStats s = stats();
+  finished_ = s;
+  finished_.restarts = s.restarts + 1;
+  Check(CVodeReInit(cv_->mem, t_, cv_->y), "CVodeReInit");
+  needs_restart_ = false;
+  restarted_since_inputs_changed_ = true;
 }
 
 IntegratorStats Integrator::stats() const {
@@ -170,14 +184,7 @@ IntegrationStatus Integrator::AdvanceTo(double t) {
   }
   if (!(t > t_)) return status;
 
-  if (needs_restart_) {
-    // CVodeReInit clears CVODE's counters: keep what they held
-    const IntegratorStats s = stats();
-    finished_ = s;
-    finished_.restarts = s.restarts + 1;
-    Check(CVodeReInit(cv_->mem, t_, cv_->y), "CVodeReInit");
-    needs_restart_ = false;
-  }
+  if (needs_restart_) Restart();
 
   const IntegratorStats before = stats();
   const long remaining = settings_.step_budget - before.steps;
@@ -192,9 +199,23 @@ IntegrationStatus Integrator::AdvanceTo(double t) {
   CVodeSetStopTime(cv_->mem, t);
 
   double t_reached = t_;
-  const int flag = CVode(cv_->mem, t, cv_->y, &t_reached, CV_NORMAL);
+  int flag = CVode(cv_->mem, t, cv_->y, &t_reached, CV_NORMAL);
   t_ = t_reached;
   CopyStateFromVector();
+
+  // CVODE failed after the held inputs jumped without a restart: its history
+  // still described the old right-hand side. Restart where it stopped (the
+  // last step it accepted) and try once more.
+  const bool recoverable = flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE;
+  if (recoverable && !restarted_since_inputs_changed_ && state_.q.allFinite() && state_.v.allFinite()) {
+    last_cvode_message_.clear();
+    Restart();
+    CVodeSetMaxNumSteps(cv_->mem, std::max(1L, settings_.step_budget - stats().steps));
+    CVodeSetStopTime(cv_->mem, t);
+    flag = CVode(cv_->mem, t, cv_->y, &t_reached, CV_NORMAL);
+    t_ = t_reached;
+    CopyStateFromVector();
+  }
 
   if (flag >= 0 && state_.q.allFinite() && state_.v.allFinite()) return status;
 

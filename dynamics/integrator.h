@@ -14,6 +14,12 @@ namespace walkers {
 
 enum class MultistepMethod { kBdf, kAdams };
 
+// How CVODE's Newton systems (18x18) are solved.
+enum class LinearSolver {
+  kSchurComplement,  // factor the 9x9 Schur complement (dynamics/schur_linear_solver.h)
+  kDense,            // SUNDIALS' dense LU of the whole matrix
+};
+
 // Where CVODE's Newton iteration gets the Jacobian of the right-hand side.
 enum class JacobianSource {
   kAnalytic,          // AccelerationJacobian (dynamics/jacobian.h)
@@ -27,13 +33,14 @@ struct IntegratorSettings {
   double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
   int max_order = 5;                          // BDF: 1..5, Adams: 1..12
   JacobianSource jacobian = JacobianSource::kAnalytic;
+  LinearSolver linear_solver = LinearSolver::kSchurComplement;
   bool stability_limit_detection = false;
   // Restart CVODE (back to order 1) whenever the held joint torques change.
-  // AdvanceTo never steps past a point where they may change, but without a
-  // restart CVODE's history still holds the old accelerations: at tight
-  // tolerances its error test then fails at the jump. Switching a weld
-  // always restarts.
-  bool restart_on_torque_change = true;
+  // AdvanceTo never steps past a point where they may change, and CVODE's
+  // error test usually copes with the jump more cheaply than a restart; when
+  // it does not (its history still holds the old accelerations), AdvanceTo
+  // restarts at the jump and tries again. Switching a weld always restarts.
+  bool restart_on_torque_change = false;
   // Switching a weld on projects the state onto it (ProjectOntoWeld): the foot
   // lands as a plastic impact instead of being yanked by the stiff weld.
   bool project_on_plant = true;
@@ -87,6 +94,7 @@ class Integrator {
   bool EvaluateRightHandSide(const double* y, double* ydot);
   // the 18x18 Jacobian of the right-hand side, column-major into `jacobian`
   bool EvaluateJacobian(const double* y, double* jacobian);
+  void Restart();
   void CopyStateToVector();
   void CopyStateFromVector();
 
@@ -97,6 +105,7 @@ class Integrator {
   State state_;
   double t_ = 0;
   bool needs_restart_ = false;
+  bool restarted_since_inputs_changed_ = true;  // a failure before a restart is retried once
   bool non_finite_ = false;
   std::string pending_failure_;  // a failed projection, reported by the next AdvanceTo
   std::string last_cvode_message_;

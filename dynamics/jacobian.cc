@@ -1,94 +1,159 @@
 #include "dynamics/jacobian.h"
 
+#include <array>
 #include <cmath>
 
 namespace walkers {
 namespace {
 
-// d(J^T F) for a force F(q, v) applied at point p
-void AddForceDerivatives(const PointKinematics& p, const Vec2& F, const Jac2x9& dF_dq, const Jac2x9& dF_dv,
-                         Mat9* dG_dq, Mat9* dG_dv) {
+// Every point and angle of the tree depends on at most six coordinates: the
+// trunk's (x, y, pitch) and one leg's (hip, knee, ankle). Each force's
+// derivative terms are assembled in that 6x6 block and scattered into the 9x9
+// matrices: the dense products would mostly multiply zeros.
+using Row6 = Eigen::Matrix<double, 1, 6>;
+using Jac2x6 = Eigen::Matrix<double, 2, 6>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+struct Block {
+  std::array<int, 6> cols;
+  explicit Block(int leg)
+      : cols{kX, kY, kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)} {}
+  Row6 Gather(const Row9& r) const {
+    Row6 out;
+    for (int i = 0; i < 6; ++i) out(i) = r(cols[i]);
+    return out;
+  }
+  Jac2x6 Gather(const Jac2x9& J) const {
+    Jac2x6 out;
+    for (int i = 0; i < 6; ++i) out.col(i) = J.col(cols[i]);
+    return out;
+  }
+  void ScatterAdd(const Mat6& local, Mat9* M) const {
+    for (int j = 0; j < 6; ++j) {
+      for (int i = 0; i < 6; ++i) (*M)(cols[i], cols[j]) += local(i, j);
+    }
+  }
+};
+
+// The leg a point or angle belongs to (the trunk's belong to either: their
+// joint columns are zero).
+int LegOf(const PointKinematics& p) {
+  for (int k = 0; k < p.num_links; ++k) {
+    const Row9& j = p.links[k].body->j;
+    if (j(JointIndex(kRight, kHip)) != 0.0) return kRight;
+  }
+  return kLeft;
+}
+
+// d(J^T F) for a force F(q, v) applied at point p, given dF/dq and dF/dv in
+// the point's block
+void AddForceDerivatives(const PointKinematics& p, const Block& block, const Vec2& F, const Jac2x6& dF_dq,
+                         const Jac2x6& dF_dv, Mat6* dG_dq, Mat6* dG_dv) {
   // the link vectors turn with their angles: d perp(r_k) / d angle_k = -r_k
   for (int k = 0; k < p.num_links; ++k) {
     const PointKinematics::Link& link = p.links[k];
-    dG_dq->noalias() += (-link.r.dot(F)) * link.body->j.transpose() * link.body->j;
+    const Row6 j = block.Gather(link.body->j);
+    dG_dq->noalias() += (-link.r.dot(F)) * j.transpose() * j;
   }
-  dG_dq->noalias() += p.J.transpose() * dF_dq;
-  dG_dv->noalias() += p.J.transpose() * dF_dv;
+  const Jac2x6 J = block.Gather(p.J);
+  dG_dq->noalias() += J.transpose() * dF_dq;
+  dG_dv->noalias() += J.transpose() * dF_dv;
+}
+
+// d(J v)/dq = sum_k -r_k w_k j_k, in the point's block
+Jac2x6 LocalVelocityJacobian(const PointKinematics& p, const Block& block) {
+  Jac2x6 dv_dq = Jac2x6::Zero();
+  for (int k = 0; k < p.num_links; ++k) {
+    dv_dq.noalias() -= (p.links[k].body->rate * p.links[k].r) * block.Gather(p.links[k].body->j);
+  }
+  return dv_dq;
 }
 
 // gravity and inertia of a point mass at fixed a: F = m (g - J a - a_bias)
-void AddPointMassDerivatives(double m, double gravity, const PointKinematics& p, const Vec9& a, Mat9* dG_dq,
-                             Mat9* dG_dv) {
+void AddPointMassDerivatives(double m, double gravity, const PointKinematics& p, const Vec9& a, Mat9* dR_dq,
+                             Mat9* dR_dv) {
+  const Block block(LegOf(p));
   const Vec2 F = m * (Vec2(0.0, -gravity) - p.J * a - p.a_bias);
-  Jac2x9 dF_dq = Jac2x9::Zero(), dF_dv = Jac2x9::Zero();
+  Jac2x6 dF_dq = Jac2x6::Zero(), dF_dv = Jac2x6::Zero();
   for (int k = 0; k < p.num_links; ++k) {
     const PointKinematics::Link& link = p.links[k];
     const double w = link.body->rate;
+    const Row6 j = block.Gather(link.body->j);
     // d(J a)/dq = sum -r_k (j_k a) j_k;  d(a_bias)/dq = sum -perp(r_k) w_k^2 j_k
-    dF_dq.noalias() += m * (link.r * link.body->j.dot(a) + Perp(link.r) * (w * w)) * link.body->j;
+    dF_dq.noalias() += m * (link.r * link.body->j.dot(a) + Perp(link.r) * (w * w)) * j;
     // d(a_bias)/dv = sum -2 r_k w_k j_k
-    dF_dv.noalias() += (2.0 * m * w) * link.r * link.body->j;
+    dF_dv.noalias() += (2.0 * m * w) * link.r * j;
   }
-  AddForceDerivatives(p, F, dF_dq, dF_dv, dG_dq, dG_dv);
+  Mat6 dG_dq = Mat6::Zero(), dG_dv = Mat6::Zero();
+  AddForceDerivatives(p, block, F, dF_dq, dF_dv, &dG_dq, &dG_dv);
+  block.ScatterAdd(dG_dq, dR_dq);
+  block.ScatterAdd(dG_dv, dR_dv);
 }
 
-// a contact force F(depth, depth_rate, slip) on a point; the chain rule
+// a contact force F(depth, depth_rate, slip) on a point: the chain rule
 // through the three contact variables, given their own derivatives
-void AddContactDerivatives(const ContactParameters& c, const PointKinematics& p, double depth, double depth_rate,
-                           double slip, const Row9& ddepth_dq, const Row9& drate_dq, const Row9& drate_dv,
-                           const Row9& dslip_dq, const Row9& dslip_dv, Mat9* dG_dq, Mat9* dG_dv,
-                           Jac2x9* dF_dq_out = nullptr, Jac2x9* dF_dv_out = nullptr) {
-  const Vec2 F = GroundForce(c, depth, depth_rate, slip);
-  const Eigen::Matrix<double, 2, 3> D = GroundForceDerivatives(c, depth, depth_rate, slip);
-  const Jac2x9 dF_dq = D.col(0) * ddepth_dq + D.col(1) * drate_dq + D.col(2) * dslip_dq;
-  const Jac2x9 dF_dv = D.col(1) * drate_dv + D.col(2) * dslip_dv;
-  AddForceDerivatives(p, F, dF_dq, dF_dv, dG_dq, dG_dv);
-  if (dF_dq_out) *dF_dq_out = dF_dq;
-  if (dF_dv_out) *dF_dv_out = dF_dv;
+Jac2x6 ContactForceDerivative(const Eigen::Matrix<double, 2, 3>& D, const Row6& ddepth, const Row6& drate,
+                              const Row6& dslip) {
+  return D.col(0) * ddepth + D.col(1) * drate + D.col(2) * dslip;
 }
 
-void AddGroundContactDerivatives(const Model& model, const Kinematics& kin, Mat9* dG_dq, Mat9* dG_dv) {
+void AddGroundContactDerivatives(const Model& model, const Kinematics& kin, Mat9* dR_dq, Mat9* dR_dv) {
   const ContactParameters& c = model.contact;
   const auto carriers = ContactCarriers(model, kin);
   for (int i = 0; i < kNumContactPoints; ++i) {
     const ContactCarrier& carrier = carriers[i];
     if (carrier.base->p.y() + carrier.r.y() >= 0.0) continue;  // above the ground
+    Mat6 dG_dq = Mat6::Zero(), dG_dv = Mat6::Zero();
     if (!IsKneeCircle(i)) {
       // a box corner: a material point of its box
       const PointKinematics p = OffsetPoint(*carrier.base, *carrier.body, carrier.r);
-      const Jac2x9 dv_dq = PointVelocityJacobian(p);
-      AddContactDerivatives(c, p, -p.p.y(), -p.v.y(), p.v.x(), -p.J.row(1), -dv_dq.row(1), -p.J.row(1),
-                            dv_dq.row(0), p.J.row(0), dG_dq, dG_dv);
+      const Block block(LegOf(p));
+      const Jac2x6 J = block.Gather(p.J), dv_dq = LocalVelocityJacobian(p, block);
+      const double depth = -p.p.y(), rate = -p.v.y(), slip = p.v.x();
+      const Eigen::Matrix<double, 2, 3> D = GroundForceDerivatives(c, depth, rate, slip);
+      const Jac2x6 dF_dq = ContactForceDerivative(D, -J.row(1), -dv_dq.row(1), dv_dq.row(0));
+      const Jac2x6 dF_dv = ContactForceDerivative(D, Row6::Zero(), -J.row(1), J.row(0));
+      AddForceDerivatives(p, block, GroundForce(c, depth, rate, slip), dF_dq, dF_dv, &dG_dq, &dG_dv);
+      block.ScatterAdd(dG_dq, dR_dq);
+      block.ScatterAdd(dG_dv, dR_dv);
       continue;
     }
     // a knee circle: the force acts at the knee, and friction also turns the
     // femur by R F_t (the offset stays vertical: it does not turn)
     const PointKinematics& knee = *carrier.base;
-    const AngleKinematics& femur = *carrier.body;
+    const Block block(LegOf(knee));
+    const Row6 femur = block.Gather(carrier.body->j);
     const double radius = -carrier.r.y();
-    const Jac2x9 dv_dq = PointVelocityJacobian(knee);
-    const Row9 dslip_dv = knee.J.row(0) + radius * femur.j;
-    Jac2x9 dF_dq, dF_dv;
-    AddContactDerivatives(c, knee, radius - knee.p.y(), -knee.v.y(), knee.v.x() + radius * femur.rate,
-                          -knee.J.row(1), -dv_dq.row(1), -knee.J.row(1), dv_dq.row(0), dslip_dv, dG_dq, dG_dv,
-                          &dF_dq, &dF_dv);
-    dG_dq->noalias() += radius * femur.j.transpose() * dF_dq.row(0);
-    dG_dv->noalias() += radius * femur.j.transpose() * dF_dv.row(0);
+    const Jac2x6 J = block.Gather(knee.J), dv_dq = LocalVelocityJacobian(knee, block);
+    const double depth = radius - knee.p.y(), rate = -knee.v.y(), slip = knee.v.x() + radius * carrier.body->rate;
+    const Eigen::Matrix<double, 2, 3> D = GroundForceDerivatives(c, depth, rate, slip);
+    const Jac2x6 dF_dq = ContactForceDerivative(D, -J.row(1), -dv_dq.row(1), dv_dq.row(0));
+    const Jac2x6 dF_dv = ContactForceDerivative(D, Row6::Zero(), -J.row(1), J.row(0) + radius * femur);
+    AddForceDerivatives(knee, block, GroundForce(c, depth, rate, slip), dF_dq, dF_dv, &dG_dq, &dG_dv);
+    dG_dq.noalias() += radius * femur.transpose() * dF_dq.row(0);
+    dG_dv.noalias() += radius * femur.transpose() * dF_dv.row(0);
+    block.ScatterAdd(dG_dq, dR_dq);
+    block.ScatterAdd(dG_dv, dR_dv);
   }
 }
 
-void AddWeldDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, Mat9* dG_dq, Mat9* dG_dv) {
+void AddWeldDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, Mat9* dR_dq, Mat9* dR_dv) {
   for (int leg = 0; leg < kNumLegs; ++leg) {
     if (!welds[leg].active) continue;
     const LegKinematics& l = kin.legs[leg];
+    const Block block(leg);
+    const Jac2x6 J = block.Gather(l.ankle.J);
     const Vec2 F = -model.weld.stiffness * (l.ankle.p - welds[leg].anchor) - model.weld_damping * l.ankle.v;
-    const Jac2x9 dF_dq = -model.weld.stiffness * l.ankle.J - model.weld_damping * PointVelocityJacobian(l.ankle);
-    const Jac2x9 dF_dv = -model.weld_damping * l.ankle.J;
-    AddForceDerivatives(l.ankle, F, dF_dq, dF_dv, dG_dq, dG_dv);
+    const Jac2x6 dF_dq = -model.weld.stiffness * J - model.weld_damping * LocalVelocityJacobian(l.ankle, block);
+    const Jac2x6 dF_dv = -model.weld_damping * J;
+    Mat6 dG_dq = Mat6::Zero(), dG_dv = Mat6::Zero();
+    AddForceDerivatives(l.ankle, block, F, dF_dq, dF_dv, &dG_dq, &dG_dv);
     // the torque on the foot angle: its row j is constant
-    dG_dq->noalias() -= model.weld.angular_stiffness * l.foot.j.transpose() * l.foot.j;
-    dG_dv->noalias() -= model.weld_angular_damping * l.foot.j.transpose() * l.foot.j;
+    const Row6 foot = block.Gather(l.foot.j);
+    dG_dq.noalias() -= model.weld.angular_stiffness * foot.transpose() * foot;
+    dG_dv.noalias() -= model.weld_angular_damping * foot.transpose() * foot;
+    block.ScatterAdd(dG_dq, dR_dq);
+    block.ScatterAdd(dG_dv, dR_dv);
   }
 }
 
@@ -169,15 +234,17 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
     }
   }
 
-  // a locked coordinate does not accelerate: its rows vanish (ws->llt holds
-  // the correspondingly masked mass matrix)
+  // a locked coordinate does not accelerate: its rows vanish (ws->cholesky
+  // holds the correspondingly masked mass matrix)
   for (int i = 0; i < kNumCoords; ++i) {
     if (!model.options.locked[i]) continue;
     dR_dq.row(i).setZero();
     dR_dv.row(i).setZero();
   }
-  *da_dq = ws->llt.solve(dR_dq);
-  *da_dv = ws->llt.solve(dR_dv);
+  *da_dq = dR_dq;
+  *da_dv = dR_dv;
+  ws->cholesky.SolveInPlace(da_dq);
+  ws->cholesky.SolveInPlace(da_dv);
   return da_dq->allFinite() && da_dv->allFinite();
 }
 

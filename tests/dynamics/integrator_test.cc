@@ -218,6 +218,31 @@ TEST(IntegratorTest, CountsStepsAndRightHandSidesAcrossRestarts) {
   EXPECT_EQ(second.restarts, 1);
 }
 
+TEST(IntegratorTest, RestartsAndRetriesWhenATorqueJumpDefeatsCvodesHistory) {
+  // tight tolerances and large torque jumps at every 30 Hz tick: without a
+  // restart CVODE's error test cannot pass right after a jump, so AdvanceTo
+  // must restart there and carry on
+  const Model m = BuildModel(BodyOf(DefaultGenome()));
+  IntegratorSettings settings = Tight();
+  settings.relative_tolerance = 1e-8;
+  settings.absolute_tolerance_position = 1e-8;
+  settings.absolute_tolerance_velocity = 1e-6;
+  ASSERT_FALSE(settings.restart_on_torque_change);
+  Integrator integrator(m, settings);
+  const State start = StartState(m);
+  Inputs inputs;
+  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+  integrator.Reset(0.0, start, inputs);
+  for (int tick = 0; tick < 30; ++tick) {
+    for (int i = kHipL; i < kNumCoords; ++i) inputs.joint_torque(i) = (tick % 2 ? 400.0 : -400.0) * (i % 3 + 1);
+    integrator.SetInputs(inputs);
+    const IntegrationStatus status = integrator.AdvanceTo((tick + 1) / kControlRate);
+    ASSERT_TRUE(status.ok()) << "tick " << tick << ": " << status.reason;
+  }
+  EXPECT_GE(integrator.stats().restarts, 1);
+  EXPECT_NEAR(integrator.time(), 1.0, 1e-12);
+}
+
 TEST(IntegratorTest, IsDeterministic) {
   const Model m = BuildModel(BodyOf(DefaultGenome()));
   auto run = [&] {
