@@ -11,7 +11,7 @@ void Evaluation(benchmark::State& st, const Preset& preset) {
   EvaluationResult r;
   for (auto _ : st) {
     r = Evaluate(genome, preset);
-    benchmark::DoNotOptimize(r.fitness);
+    benchmark::DoNotOptimize(r);
   }
   st.SetItemsProcessed(st.iterations());
   st.counters["fitness"] = r.fitness;
