@@ -14,5 +14,6 @@ using Command = std::function<int()>;
 
 void AddSimulateCommand(CLI::App& app, Command* selected);
 void AddEvaluateCommand(CLI::App& app, Command* selected);
+void AddEvolveCommand(CLI::App& app, Command* selected);
 
 }  // namespace walkers::app

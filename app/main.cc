@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   walkers::app::Command selected;
   walkers::app::AddSimulateCommand(app, &selected);
   walkers::app::AddEvaluateCommand(app, &selected);
+  walkers::app::AddEvolveCommand(app, &selected);
 
   try {
     app.parse(argc, argv);

@@ -46,6 +46,37 @@ grep -q ',DS,' "$tmp/e.csv" && grep -Eq ',(LS|RS),' "$tmp/e.csv" ||
   { echo "FAIL: evaluate trajectory has no DS and LS/RS states"; failures=$((failures + 1)); }
 expect 0 '^fitness [-0-9.]+ +\(distance' -- evaluate --genome "$genome" --preset paper
 
+# evolve: an uninterrupted run, and the same run killed (SIGKILL) at random
+# moments and resumed each time, end with the same files (but for the
+# wall-clock columns, the last of each CSV row)
+small=(--case performance --generations 6 --population 8 --archive 8 --mutation-children 5 --seed 3 --threads 2)
+expect 0 'best fitness' -- evolve "${small[@]}" --out "$tmp/whole"
+"$walkers" evolve "${small[@]}" --out "$tmp/killed" >/dev/null 2>&1 &
+pid=$!
+sleep 0.$((RANDOM % 9 + 1))
+kill -9 $pid 2>/dev/null
+wait $pid 2>/dev/null
+for attempt in 1 2 3 4 5 6 7 8 9 10; do
+  [ -f "$tmp/killed/best.json" ] && break
+  if [ -f "$tmp/killed/config.json" ]; then mode=--resume; else mode=--force; fi
+  "$walkers" evolve "${small[@]}" --out "$tmp/killed" $mode >/dev/null 2>&1 &
+  pid=$!
+  sleep 0.$((RANDOM % 9 + 1))
+  kill -9 $pid 2>/dev/null
+  wait $pid 2>/dev/null
+done
+[ -f "$tmp/killed/best.json" ] || "$walkers" evolve "${small[@]}" --out "$tmp/killed" --resume >/dev/null 2>&1
+for f in evaluations.csv generations.csv; do
+  if ! cmp -s <(sed 's/,[^,]*$//' "$tmp/whole/$f") <(sed 's/,[^,]*$//' "$tmp/killed/$f"); then
+    echo "FAIL: killed and resumed run differs in $f"; failures=$((failures + 1))
+  fi
+done
+for f in archive.json best.json config.json; do
+  cmp -s "$tmp/whole/$f" "$tmp/killed/$f" || { echo "FAIL: killed and resumed run differs in $f"; failures=$((failures + 1)); }
+done
+echo "ok: SIGKILLed run resumed to the same files"
+expect 0 '^fitness' -- evaluate --genome "$tmp/whole/best.json"
+
 # bad input: a clear message and a non-zero exit
 sed 's/"kStep": [0-9.]*/"kStep": 900/' "$genome" >"$tmp/bad.json"
 expect nonzero "bad.json: gene 'kStep' = 900 is outside its allowed range \[0, 800\]" -- \
@@ -56,6 +87,12 @@ expect nonzero 'genome' -- simulate --genome "$tmp/absent.json" --duration 1
 expect nonzero 'cannot write the trajectory' -- simulate --genome "$genome" --duration 0.1 --trajectory "$tmp/no/such/dir/t.csv"
 expect nonzero 'preset.*(paper|original)' -- evaluate --genome "$genome" --preset authors
 expect nonzero "bad.json: gene 'kStep'" -- evaluate --genome "$tmp/bad.json"
+expect nonzero 'case.*free.*time.*performance' -- evolve --case scaffolded --out "$tmp/x"
+expect nonzero 'generations' -- evolve --case free --generations 0 --out "$tmp/x"
+expect nonzero 'holds a run already; pass --resume' -- evolve "${small[@]}" --out "$tmp/whole"
+expect nonzero 'cannot create the run directory' -- evolve --case free --out "$tmp/t.csv/run"
+expect nonzero 'no run to resume' -- evolve --case free --out "$tmp/empty" --resume
+expect nonzero 'seed = 3 but 4' -- evolve --case performance --generations 6 --population 8 --archive 8 --mutation-children 5 --seed 4 --out "$tmp/whole" --resume
 expect nonzero 'simulate|Usage|subcommand' --
 
 [[ $failures -eq 0 ]] || { echo "$failures CLI check(s) failed"; exit 1; }

@@ -1,0 +1,86 @@
+// walkers evolve: one scaffolded evolution run.
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "app/commands.h"
+#include "app/progress.h"
+#include "evolve/run.h"
+
+namespace walkers::app {
+namespace {
+
+struct EvolveOptions {
+  std::string scaffold_case;
+  std::string preset = "original";
+  int generations = 4000;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  std::string out;
+  bool resume = false;
+  bool force = false;
+  GeneticAlgorithmConfig ga;
+};
+
+int RunEvolve(const EvolveOptions& opt) {
+  RunConfig config;
+  config.scaffold_case = ScaffoldCaseByName(opt.scaffold_case);
+  config.preset = PresetByName(opt.preset);
+  config.generations = opt.generations;
+  config.seed = opt.seed;
+  config.ga = opt.ga;
+  config.Validate();
+
+  const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  const StartMode mode = opt.resume ? StartMode::kResume : opt.force ? StartMode::kForce : StartMode::kNew;
+  EvolutionRun run(config, opt.out, mode, threads);
+  if (run.completed_generations() > 0) {
+    std::fprintf(stderr, "resuming %s after generation %d\n", opt.out.c_str(), run.completed_generations());
+  }
+
+  Progress progress(std::string(ScaffoldCaseName(config.scaffold_case)) + "/" + config.preset.name);
+  run.Run([&](const GenerationSummary& s) { progress.Report(s); });
+  progress.Finish();
+
+  const Individual& best = run.archive().best();
+  std::printf("best fitness %.4f (%s, generation %d) after %d generations; InitF %.4f; results in %s\n",
+              best.fitness(), GaitName(best.result.gait), best.generation, run.completed_generations(),
+              run.initial_fitness(), opt.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void AddEvolveCommand(CLI::App& app, Command* selected) {
+  auto opt = std::make_shared<EvolveOptions>();
+  CLI::App* sub = app.add_subcommand("evolve", "Evolve walkers under a scaffold (paper Algorithm 1)");
+  sub->add_option("--case", opt->scaffold_case, "Scaffold: free, time (eq. 7) or performance (eq. 8)")
+      ->required()
+      ->check(CLI::IsMember({"free", "time", "performance"}));
+  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
+      ->check(CLI::IsMember({"paper", "original"}))
+      ->capture_default_str();
+  sub->add_option("--generations", opt->generations, "Generations to run")
+      ->check(CLI::Range(1, 10000000))
+      ->capture_default_str();
+  sub->add_option("--seed", opt->seed, "Random seed of the run")->capture_default_str();
+  sub->add_option("--threads", opt->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  sub->add_option("--out", opt->out, "Run directory")->required();
+  auto* resume = sub->add_flag("--resume", opt->resume, "Continue the run in --out from its last checkpoint");
+  auto* force = sub->add_flag("--force", opt->force, "Replace the run in --out");
+  resume->excludes(force);
+  sub->add_option("--population", opt->ga.population, "Children per generation")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  sub->add_option("--archive", opt->ga.archive_size, "All-time fittest kept")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  sub->add_option("--mutation-children", opt->ga.mutation_children,
+                  "Mutation children per generation; the rest are crossover children")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  sub->callback([opt, selected] { *selected = [opt] { return RunEvolve(*opt); }; });
+}
+
+}  // namespace walkers::app

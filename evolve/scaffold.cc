@@ -1,0 +1,85 @@
+#include "evolve/scaffold.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace walkers {
+namespace {
+
+// Case 1: the body length evolves freely up to its own ceiling.
+class FreeScaffold : public Scaffold {
+ public:
+  ScaffoldCase id() const override { return ScaffoldCase::kFree; }
+  double Ceiling(const ScaffoldInputs&) const override { return kBodyCeiling; }
+};
+
+// Case 2, paper eq. (7): 1.8 - 0.4 i in body length, i.e. halfBodyX ceilings
+// 0.9, 0.7, 0.5, 0.3, 0.1 for generations [0,500), [500,1000), ... [2000, end).
+class TimeScaffold : public Scaffold {
+ public:
+  ScaffoldCase id() const override { return ScaffoldCase::kTime; }
+  double Ceiling(const ScaffoldInputs& in) const override {
+    const int stage = std::min(in.generation / 500, 4);
+    return kBodyCeiling - 0.2 * stage;
+  }
+};
+
+// Case 3: the ceiling falls as the best three's fitness rises over InitF.
+class PerformanceScaffold : public Scaffold {
+ public:
+  explicit PerformanceScaffold(PerformanceCeiling formula) : formula_(formula) {}
+  ScaffoldCase id() const override { return ScaffoldCase::kPerformance; }
+  double Ceiling(const ScaffoldInputs& in) const override {
+    // no progress to measure yet (a non-walking default or best three): no scaffold removed
+    if (!(in.initial_fitness > 0.0) || !(in.ave_best3 > 0.0)) return kBodyCeiling;
+    const double ratio = in.ave_best3 / in.initial_fitness;
+    if (formula_ == PerformanceCeiling::kPaperEq8) {
+      // paper eq. (8): max(1.8 - 0.4 Ave/InitF, 0.05) in body length
+      return std::max(kBodyCeiling - 0.2 * ratio, kBodyFloor);
+    }
+    // the authors' program: max(0.9 InitF/Ave - 0.2, 0). It may fall below
+    // the floor, never below 0.01 here. While the best three average less
+    // than about 0.82 InitF it exceeds 0.9: a scaffold only lowers the body's
+    // ceiling, so it is capped there (genome files reject longer bodies)
+    const double authors = std::max(kBodyCeiling / ratio - 0.2, 0.0);
+    return std::clamp(authors, kMinimumCeiling, kBodyCeiling);
+  }
+
+ private:
+  PerformanceCeiling formula_;
+};
+
+}  // namespace
+
+const char* ScaffoldCaseName(ScaffoldCase c) {
+  switch (c) {
+    case ScaffoldCase::kFree:
+      return "free";
+    case ScaffoldCase::kTime:
+      return "time";
+    case ScaffoldCase::kPerformance:
+      return "performance";
+  }
+  return "?";
+}
+
+ScaffoldCase ScaffoldCaseByName(const std::string& name) {
+  if (name == "free") return ScaffoldCase::kFree;
+  if (name == "time") return ScaffoldCase::kTime;
+  if (name == "performance") return ScaffoldCase::kPerformance;
+  throw std::invalid_argument("unknown case '" + name + "': allowed values are free, time, performance");
+}
+
+std::unique_ptr<Scaffold> MakeScaffold(ScaffoldCase c, const Preset& preset) {
+  switch (c) {
+    case ScaffoldCase::kFree:
+      return std::make_unique<FreeScaffold>();
+    case ScaffoldCase::kTime:
+      return std::make_unique<TimeScaffold>();
+    case ScaffoldCase::kPerformance:
+      return std::make_unique<PerformanceScaffold>(preset.performance_ceiling);
+  }
+  throw std::invalid_argument("unknown scaffold case");
+}
+
+}  // namespace walkers
