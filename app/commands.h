@@ -15,5 +15,7 @@ using Command = std::function<int()>;
 void AddSimulateCommand(CLI::App& app, Command* selected);
 void AddEvaluateCommand(CLI::App& app, Command* selected);
 void AddEvolveCommand(CLI::App& app, Command* selected);
+void AddReplayCommand(CLI::App& app, Command* selected);
+void AddReproduceCommand(CLI::App& app, Command* selected);
 
 }  // namespace walkers::app

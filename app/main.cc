@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   walkers::app::AddSimulateCommand(app, &selected);
   walkers::app::AddEvaluateCommand(app, &selected);
   walkers::app::AddEvolveCommand(app, &selected);
+  walkers::app::AddReplayCommand(app, &selected);
+  walkers::app::AddReproduceCommand(app, &selected);
 
   try {
     app.parse(argc, argv);

@@ -23,6 +23,23 @@ double GravitationalEnergy(const Model& model, const Kinematics& kin) {
   return model.options.gravity * mass_height;
 }
 
+CenterOfMass ComputeCenterOfMass(const Model& model, const Kinematics& kin) {
+  CenterOfMass c;
+  auto add = [&c](double m, const PointKinematics& p) {
+    c.p += m * p.p;
+    c.v += m * p.v;
+  };
+  add(model.trunk_mass, kin.trunk);
+  add(model.hips_mass, kin.hip);
+  for (const LegKinematics& leg : kin.legs) {
+    add(model.knee_mass, leg.knee);
+    add(model.ankle_mass, leg.ankle);
+  }
+  c.p /= model.total_mass;
+  c.v /= model.total_mass;
+  return c;
+}
+
 double PotentialEnergy(const Model& model, const Kinematics& kin, const Welds& welds) {
   return GravitationalEnergy(model, kin) + ElasticEnergy(model, kin, welds);
 }

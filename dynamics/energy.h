@@ -20,4 +20,11 @@ double GravitationalEnergy(const Model& model, const Kinematics& kin);
 // decrease: every other force element dissipates.
 double PotentialEnergy(const Model& model, const Kinematics& kin, const Welds& welds);
 
+// Centre of mass and its velocity (every point mass of the tree).
+struct CenterOfMass {
+  Vec2 p = Vec2::Zero();  // [m]
+  Vec2 v = Vec2::Zero();  // [m/s]
+};
+CenterOfMass ComputeCenterOfMass(const Model& model, const Kinematics& kin);
+
 }  // namespace walkers

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages this project needs, when they are missing.
 # Run as root (or with sudo available). Nothing is downloaded at build or run time.
+#   setup.sh          what building and running need
+#   setup.sh --test   and what the tests need: Chromium, to check the replay page
 set -euo pipefail
 
 packages=(
@@ -8,6 +10,9 @@ packages=(
   libeigen3-dev libsundials-dev libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
   python3 python3-matplotlib
 )
+if [ "${1:-}" = "--test" ]; then
+  packages+=(chromium)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

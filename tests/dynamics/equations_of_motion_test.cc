@@ -121,3 +121,25 @@ TEST_F(EquationsOfMotionTest, LockedCoordinatesDoNotAccelerate) {
 
 }  // namespace
 }  // namespace walkers
+
+namespace walkers {
+namespace {
+
+TEST(CenterOfMassTest, MovesWithTheGeneralizedMomentum) {
+  // total momentum = M v_com = the first two rows of the mass matrix times q'
+  const Model m = BuildModel(BodyOf(DefaultGenome()));
+  std::mt19937 rng(3);
+  const Vec9 q = testing::RandomVector<kNumCoords>(rng, -1.0, 1.0);
+  const Vec9 v = testing::RandomVector<kNumCoords>(rng, -1.0, 1.0);
+  Kinematics kin;
+  ComputeKinematics(m, q, v, &kin);
+  const CenterOfMass c = ComputeCenterOfMass(m, kin);
+  const Vec9 momentum = MassMatrix(m, q) * v;
+  EXPECT_TRUE(testing::MatricesNear(Vec2(momentum.head<2>()), Vec2(m.total_mass * c.v), 1e-9));
+  // the heavy trunk dominates: the centre of mass is near it, below it
+  EXPECT_LT((c.p - kin.trunk.p).norm(), 0.3);
+  EXPECT_GT(c.v.norm(), 0.0);
+}
+
+}  // namespace
+}  // namespace walkers

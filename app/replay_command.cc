@@ -1,0 +1,54 @@
+// walkers replay: a picture of one genome's walk, animated (HTML) or as a filmstrip (SVG).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+#include "app/commands.h"
+#include "app/replay.h"
+#include "control/genome.h"
+#include "control/walk_record.h"
+
+namespace walkers::app {
+namespace {
+
+struct ReplayOptions {
+  std::string genome_path;
+  std::string preset = "original";
+  std::string out;
+};
+
+int RunReplay(const ReplayOptions& opt) {
+  const std::string extension = std::filesystem::path(opt.out).extension().string();
+  if (extension != ".html" && extension != ".svg") {
+    throw std::invalid_argument("--out " + opt.out + ": the file must end in .html (animation) or .svg (filmstrip)");
+  }
+  const Genome genome = LoadGenome(opt.genome_path);
+  const Preset preset = PresetByName(opt.preset);
+  const std::string title = std::filesystem::path(opt.genome_path).filename().string() + ", preset " + preset.name;
+  const RecordedWalk walk = RecordWalk(genome, preset, title);
+
+  std::ofstream out(opt.out);
+  if (!out) throw std::runtime_error(opt.out + ": cannot write");
+  out << (extension == ".html" ? ReplayHtml(walk.json) : FilmstripSvg(walk.json));
+  out.close();
+  if (!out) throw std::runtime_error(opt.out + ": writing failed");
+  std::printf("%s: %s walk, fitness %.4f\n", opt.out.c_str(), GaitName(walk.result.gait), walk.result.fitness);
+  return 0;
+}
+
+}  // namespace
+
+void AddReplayCommand(CLI::App& app, Command* selected) {
+  auto opt = std::make_shared<ReplayOptions>();
+  CLI::App* sub = app.add_subcommand("replay", "Picture a genome's walk: an HTML animation or an SVG filmstrip");
+  sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
+  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
+      ->check(CLI::IsMember({"paper", "original"}))
+      ->capture_default_str();
+  sub->add_option("--out", opt->out, "walk.html (animation) or walk.svg (filmstrip)")->required();
+  sub->callback([opt, selected] { *selected = [opt] { return RunReplay(*opt); }; });
+}
+
+}  // namespace walkers::app

@@ -1,0 +1,96 @@
+// walkers reproduce: the paper's three cases with replicates, their
+// statistics beside the paper's, and its figures.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "app/commands.h"
+#include "app/figures.h"
+#include "app/progress.h"
+#include "evolve/reproduction.h"
+
+namespace walkers::app {
+namespace {
+
+struct ReproduceOptions {
+  std::string preset = "original";
+  int generations = 4000;
+  int replicates = 3;
+  int threads = 0;
+  std::uint64_t seed = 1;
+  std::string out;
+  bool resume = false;
+};
+
+int RunReproduce(const ReproduceOptions& opt) {
+  ReproductionConfig config;
+  config.preset = PresetByName(opt.preset);
+  config.generations = opt.generations;
+  config.replicates = opt.replicates;
+  config.seed = opt.seed;
+  config.Validate();
+  const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+
+  const auto start = std::chrono::steady_clock::now();
+  const int total = 3 * config.replicates;
+  int index = 0;
+  std::unique_ptr<Progress> progress;
+  ReproductionObserver observer;
+  observer.on_run_start = [&](const PlannedRun& run, int completed) {
+    if (progress) progress->Finish();
+    std::fprintf(stderr, "run %d/%d: %s (seed %llu)%s\n", ++index, total, run.name.c_str(),
+                 static_cast<unsigned long long>(run.config.seed),
+                 completed >= run.config.generations ? ", done already"
+                 : completed > 0                      ? (", resuming after generation " + std::to_string(completed)).c_str()
+                                                      : "");
+    progress = std::make_unique<Progress>(run.name);
+  };
+  observer.on_generation = [&](const PlannedRun&, const GenerationSummary& s) { progress->Report(s); };
+  const ReproductionSummary summary = Reproduce(config, opt.out, opt.resume, threads, observer);
+  if (progress) progress->Finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::printf("%d runs, %ld evaluations (%.1f per second of evaluation time); this session %s\n", total,
+              summary.evaluations,
+              summary.evaluation_seconds > 0 ? summary.evaluations / summary.evaluation_seconds : 0.0,
+              FormatDuration(seconds).c_str());
+  if (summary.best_biped) {
+    std::printf("best biped %.3f (%s %s)\n", summary.best_biped->fitness, summary.best_biped->run.c_str(),
+                summary.best_biped->id.c_str());
+  }
+  if (summary.best_tripod) {
+    std::printf("best tripod %.3f (%s %s)\n", summary.best_tripod->fitness, summary.best_tripod->run.c_str(),
+                summary.best_tripod->id.c_str());
+  }
+  const int status = DrawFigures(opt.out);
+  if (status != 0) {
+    std::fprintf(stderr, "walkers: error: the figure script failed (exit status %d); the statistics are in %s/summary.md\n",
+                 status, opt.out.c_str());
+    return 1;
+  }
+  std::printf("summary: %s/summary.md, figures: %s/figures/\n", opt.out.c_str(), opt.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void AddReproduceCommand(CLI::App& app, Command* selected) {
+  auto opt = std::make_shared<ReproduceOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "reproduce", "Reproduce the paper: three scaffolds x replicates, statistics and figures");
+  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
+      ->check(CLI::IsMember({"paper", "original"}))
+      ->capture_default_str();
+  sub->add_option("--generations", opt->generations, "Generations per run")
+      ->check(CLI::Range(1, 10000000))
+      ->capture_default_str();
+  sub->add_option("--replicates", opt->replicates, "Runs per case")->check(CLI::Range(1, 1000))->capture_default_str();
+  sub->add_option("--threads", opt->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  sub->add_option("--seed", opt->seed, "Seed of replicate 1; replicate r uses seed + r - 1")->capture_default_str();
+  sub->add_option("--out", opt->out, "Reproduction directory")->required();
+  sub->add_flag("--resume", opt->resume, "Continue the runs in --out (and redo the statistics and figures)");
+  sub->callback([opt, selected] { *selected = [opt] { return RunReproduce(*opt); }; });
+}
+
+}  // namespace walkers::app

@@ -1,0 +1,667 @@
+#!/usr/bin/env python3
+"""Draw the paper's figures 4-9 from a reproduction directory.
+
+Usage:  /usr/bin/python3 scripts/figures.py RUN_DIR
+
+(Debian's /usr/bin/python3 with python3-matplotlib; needs only the standard library,
+numpy and matplotlib.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.svg for
+
+  fig4a  distance walked (leg lengths) over 15 s, best biped vs best tripod
+  fig4b  filmstrip of both walkers over the first 5 s (a snapshot every 0.5 s)
+  fig5   gallery of evolved individuals, bipeds on the top row, tripods below
+  fig6   relative CoG height and CoG velocities (leg lengths, leg lengths/s)
+  fig7   body, femur and tibia length per generation of the best biped's run
+  fig8   best fitness per generation of every run, coloured by gait class
+  fig9   mean +- standard deviation of best fitness per case
+
+Inputs (formats as written by the `walkers` program):
+  RUN_DIR/summary.json              required
+  RUN_DIR/<run dir>/generations.csv required for every run listed in summary.json
+  RUN_DIR/walks.json                optional (fig4a, fig4b, fig6; picks fig7's run)
+  RUN_DIR/gallery.json              optional (fig5)
+
+Absent data (documented choice):
+  * A required file that is missing, or ANY input file that is present but malformed,
+    is an error: a message naming the file (and line/field) goes to stderr, nothing is
+    drawn, and the exit status is 1.
+  * An optional file that is absent makes the figures that need it be skipped with a
+    "warning:" line on stderr; the other figures are still written and the exit status
+    is 0. fig7 then uses the run with the highest final best_fitness.
+  * A null walk in walks.json (no biped or no tripod found) drops only that walker's
+    line (fig4a, fig6) and filmstrip row (fig4b), with a warning; if both are null the
+    three figures are skipped.
+  * A case with no runs in summary.json is still drawn: its fig8 panels say "no data"
+    and its fig9 legend entry reads "... (no data)"; a warning is printed.
+  * An empty gallery row (no bipeds or no tripods) says "no data" in fig5.
+
+fig9 uses the sample standard deviation (ddof = 1) over the replicates; with one
+replicate no band is drawn. Replicates of unequal length are averaged over the
+generations they all have (warning printed).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Circle, Polygon  # noqa: E402
+
+CASES = ("free", "time", "performance")
+CASE_LABELS = {"free": "Case 1 free", "time": "Case 2 time-constrained",
+               "performance": "Case 3 performance-based"}
+CASE_COLOURS = {"free": "tab:green", "time": "tab:orange", "performance": "tab:purple"}
+GAIT_COLOURS = {"biped": "tab:blue", "tripod": "tab:red"}
+GAIT_CMAPS = {"biped": "Blues", "tripod": "Reds"}
+SINGLE, DOUBLE = 3.5, 7.0          # column widths, inches
+DPI = 200
+FILM_END_S, FILM_STEP_S = 5.0, 0.5
+GEN_COLUMNS = ("generation", "best_fitness", "ave_best3", "archive_mean",
+               "ceiling_half_body_x", "best_half_body_x", "best_femur", "best_tibia",
+               "best_gait", "falls", "evals_per_s")
+BODY_KEYS = ("half_body_x", "half_body_y", "half_foot_x", "half_foot_y",
+             "femur_length", "tibia_length", "knee_radius")
+POINT_KEYS = ("hip", "knee_l", "ankle_l", "knee_r", "ankle_r")
+FRAME_KEYS = ("t", "trunk", "hip", "knee_l", "ankle_l", "foot_l", "knee_r", "ankle_r",
+              "foot_r", "distance", "com", "com_velocity")
+STYLE = {"font.size": 8, "axes.titlesize": 8, "axes.labelsize": 8,
+         "xtick.labelsize": 8, "ytick.labelsize": 8, "legend.fontsize": 8,
+         "figure.titlesize": 9, "axes.linewidth": 0.6, "lines.linewidth": 1.0,
+         "legend.frameon": False, "svg.hashsalt": "figures", "figure.dpi": DPI}
+
+
+class InputError(Exception):
+    """A missing or malformed input file; the message names the file."""
+
+
+def warn(message):
+    """Print a warning line to stderr."""
+    print(f"warning: {message}", file=sys.stderr)
+
+
+# ----------------------------------------------------------------------------- loading
+
+def read_json(path, required):
+    """Parse a JSON file; None if it is absent and not required."""
+    if not os.path.isfile(path):
+        if required:
+            raise InputError(f"{path}: file not found")
+        return None
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        raise InputError(f"{path}: not valid JSON ({e})") from None
+
+
+def field(obj, key, path, where, kind=None):
+    """obj[key], checking presence and (optionally) type; errors name file and field."""
+    if not isinstance(obj, dict) or key not in obj:
+        raise InputError(f"{path}: missing field '{where}{key}'")
+    value = obj[key]
+    if kind is not None and (not isinstance(value, kind) or isinstance(value, bool)
+                             and kind is not bool):
+        raise InputError(f"{path}: field '{where}{key}' has the wrong type")
+    return value
+
+
+def load_summary(run_dir):
+    """summary.json -> list of runs {case, replicate, dir} and the replicate count."""
+    path = os.path.join(run_dir, "summary.json")
+    summary = read_json(path, required=True)
+    runs = []
+    for i, run in enumerate(field(summary, "runs", path, "", list)):
+        where = f"runs[{i}]."
+        case = field(run, "case", path, where, str)
+        if case not in CASES:
+            raise InputError(f"{path}: field '{where}case' is '{case}', "
+                             f"expected one of {', '.join(CASES)}")
+        runs.append({"case": case, "replicate": field(run, "replicate", path, where, int),
+                     "dir": field(run, "dir", path, where, str)})
+    replicates = summary.get("replicates", 0)
+    if not isinstance(replicates, int) or isinstance(replicates, bool):
+        raise InputError(f"{path}: field 'replicates' has the wrong type")
+    return runs, max([replicates] + [r["replicate"] for r in runs])
+
+
+def load_generations(path):
+    """generations.csv -> dict of numpy arrays (numbers) and a list 'best_gait'."""
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: file not found")
+    with open(path, newline="", encoding="utf-8") as f:
+        reader = csv.DictReader(f)
+        missing = [c for c in GEN_COLUMNS if c not in (reader.fieldnames or [])]
+        if missing:
+            raise InputError(f"{path}: header lacks column(s) {', '.join(missing)}")
+        cols = {c: [] for c in GEN_COLUMNS}
+        for row in reader:
+            line = reader.line_num
+            for c in GEN_COLUMNS:
+                value = row[c]
+                if c == "best_gait":
+                    if value not in GAIT_COLOURS:
+                        raise InputError(f"{path}: line {line}, column {c}: '{value}' "
+                                         "is not 'biped' or 'tripod'")
+                    cols[c].append(value)
+                    continue
+                try:
+                    cols[c].append(float(value))
+                except (TypeError, ValueError):
+                    raise InputError(f"{path}: line {line}, column {c}: '{value}' "
+                                     "is not a number") from None
+    if not cols["generation"]:
+        raise InputError(f"{path}: no data rows")
+    data = {c: np.asarray(v) for c, v in cols.items() if c != "best_gait"}
+    data["best_gait"] = cols["best_gait"]
+    return data
+
+
+def check_walk(walk, path, name):
+    """Validate one walks.json entry (frames of equal length, numeric body)."""
+    where = f"{name}."
+    for key in ("run", "gait"):
+        field(walk, key, path, where, str)
+    for key in ("fitness", "leg_length"):
+        field(walk, key, path, where, (int, float))
+    if walk["leg_length"] <= 0:
+        raise InputError(f"{path}: field '{where}leg_length' must be positive")
+    body = field(walk, "body", path, where, dict)
+    for key in BODY_KEYS:
+        field(body, key, path, where + "body.", (int, float))
+    frames = field(walk, "frames", path, where, dict)
+    n = len(field(frames, "t", path, where + "frames.", list))
+    if n < 1:
+        raise InputError(f"{path}: '{where}frames.t' is empty")
+    for key in FRAME_KEYS:
+        value = field(frames, key, path, where + "frames.", list)
+        if len(value) != n:
+            raise InputError(f"{path}: '{where}frames.{key}' has {len(value)} entries, "
+                             f"'{where}frames.t' has {n}")
+        try:
+            np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            raise InputError(f"{path}: '{where}frames.{key}' is not numeric") from None
+    return walk
+
+
+def load_walks(run_dir):
+    """walks.json -> {'biped': walk or None, 'tripod': walk or None}, or None if absent."""
+    path = os.path.join(run_dir, "walks.json")
+    walks = read_json(path, required=False)
+    if walks is None:
+        return None
+    if not isinstance(walks, dict):
+        raise InputError(f"{path}: expected an object with 'biped' and 'tripod'")
+    out = {}
+    for gait in GAIT_COLOURS:
+        walk = field(walks, gait, path, "")
+        out[gait] = None if walk is None else check_walk(walk, path, gait)
+    return out
+
+
+def check_pose(pose, path, where):
+    """Validate a gallery pose (points [x,y], trunk [x,y,pitch], foot angles)."""
+    def vector(key, size):
+        """Check pose[key] is a list of `size` numbers."""
+        value = field(pose, key, path, where)
+        try:
+            ok = np.asarray(value, dtype=float).shape == (size,)
+        except (TypeError, ValueError):
+            ok = False
+        if not ok:
+            raise InputError(f"{path}: field '{where}{key}' must be {size} numbers")
+    vector("trunk", 3)
+    for key in POINT_KEYS:
+        vector(key, 2)
+    for key in ("foot_l", "foot_r"):
+        field(pose, key, path, where, (int, float))
+
+
+def load_gallery(run_dir):
+    """gallery.json -> list of individuals, or None if absent."""
+    path = os.path.join(run_dir, "gallery.json")
+    gallery = read_json(path, required=False)
+    if gallery is None:
+        return None
+    people = field(gallery, "individuals", path, "", list)
+    for i, ind in enumerate(people):
+        where = f"individuals[{i}]."
+        for key in ("label", "gait"):
+            field(ind, key, path, where, str)
+        if ind["gait"] not in GAIT_COLOURS:
+            raise InputError(f"{path}: field '{where}gait' is '{ind['gait']}', "
+                             "expected 'biped' or 'tripod'")
+        field(ind, "fitness", path, where, (int, float))
+        body = field(ind, "body", path, where, dict)
+        for key in BODY_KEYS:
+            field(body, key, path, where + "body.", (int, float))
+        check_pose(field(ind, "pose", path, where, dict), path, where + "pose.")
+    return people
+
+
+def load_run_dir(run_dir):
+    """Read and validate every input; raises InputError naming the bad file."""
+    if not os.path.isdir(run_dir):
+        raise InputError(f"{run_dir}: not a directory")
+    runs, replicates = load_summary(run_dir)
+    for run in runs:
+        run["data"] = load_generations(os.path.join(run_dir, run["dir"],
+                                                    "generations.csv"))
+    return {"runs": runs, "replicates": replicates, "walks": load_walks(run_dir),
+            "gallery": load_gallery(run_dir)}
+
+
+# ----------------------------------------------------------------------------- drawing
+
+def save(fig, out_dir, name):
+    """Write NAME.png (200 dpi) and NAME.svg, then close the figure."""
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(out_dir, f"{name}.{ext}"), dpi=DPI,
+                    metadata={"Date": None} if ext == "svg" else None)
+    plt.close(fig)
+    print(f"wrote {os.path.join(out_dir, name)}.png/.svg")
+
+
+def no_data(ax, text="no data"):
+    """Blank an axes with a centred 'no data' note."""
+    ax.text(0.5, 0.5, text, ha="center", va="center", transform=ax.transAxes,
+            color="0.4")
+    ax.set_xticks([])
+    ax.set_yticks([])
+
+
+def box(centre, half_x, half_y, angle):
+    """Corners (4x2) of a box with the given half sizes, centre and CCW angle."""
+    c, s = math.cos(angle), math.sin(angle)
+    local = np.array([[-half_x, -half_y], [half_x, -half_y],
+                      [half_x, half_y], [-half_x, half_y]])
+    return local @ np.array([[c, s], [-s, c]]) + np.asarray(centre[:2], dtype=float)
+
+
+def walker_shapes(body, pose):
+    """Trunk and feet corners plus the leg polylines (far/right leg first)."""
+    trunk = box(pose["trunk"][:2], body["half_body_x"], body["half_body_y"],
+                pose["trunk"][2])
+    legs, feet = [], []
+    for side in ("r", "l"):
+        legs.append(np.array([pose["hip"], pose[f"knee_{side}"], pose[f"ankle_{side}"]],
+                             dtype=float))
+        feet.append(box(pose[f"ankle_{side}"], body["half_foot_x"], body["half_foot_y"],
+                        pose[f"foot_{side}"]))
+    return trunk, legs, feet
+
+
+def walker_extent(body, pose):
+    """(xmin, xmax, ymin, ymax) of a drawn walker, knees included."""
+    trunk, legs, feet = walker_shapes(body, pose)
+    pts = np.vstack([trunk] + legs + feet)
+    r = body["knee_radius"]
+    return pts[:, 0].min() - r, pts[:, 0].max() + r, pts[:, 1].min() - r, \
+        pts[:, 1].max() + r
+
+
+def draw_walker(ax, body, pose, colour, dx=0.0, knees=True, lw=1.0, zorder=2):
+    """Draw trunk box, legs, feet (and knees to scale) of one pose, shifted by dx."""
+    trunk, legs, feet = walker_shapes(body, pose)
+    shift = np.array([dx, 0.0])
+    far = matplotlib.colors.to_rgb(colour)
+    far = tuple(0.55 * c + 0.45 for c in far)        # far (right) leg paler
+    ax.add_patch(Polygon(trunk + shift, closed=True, facecolor=colour, alpha=0.25,
+                         edgecolor="none", zorder=zorder))
+    ax.add_patch(Polygon(trunk + shift, closed=True, fill=False, edgecolor=colour,
+                         lw=lw, zorder=zorder))
+    for leg, foot, c in zip(legs, feet, (far, colour)):
+        ax.plot(leg[:, 0] + dx, leg[:, 1], color=c, lw=lw * 1.3,
+                solid_capstyle="round", zorder=zorder)
+        ax.add_patch(Polygon(foot + shift, closed=True, facecolor=c, edgecolor=c,
+                             lw=lw * 0.5, zorder=zorder))
+        if knees:
+            ax.add_patch(Circle(leg[1] + shift, body["knee_radius"], fill=False,
+                                edgecolor=c, lw=lw * 0.6, zorder=zorder))
+
+
+def ground(ax):
+    """Ground line at y = 0 with a light band below it."""
+    ax.axhline(0.0, color="0.3", lw=0.8, zorder=1)
+    ax.axhspan(-10.0, 0.0, color="0.92", zorder=0)
+
+
+def scale_bar(ax, x, y, length=1.0):
+    """A horizontal scale bar of `length` metres starting at (x, y), data units."""
+    ax.plot([x, x + length], [y, y], color="k", lw=1.5, solid_capstyle="butt",
+            zorder=5)
+    ax.text(x + length * 1.05, y, f"{length:g} m", ha="left", va="center", zorder=5)
+
+
+def frame_pose(frames, i):
+    """The pose dict of frame i of a walk."""
+    pose = {k: frames[k][i] for k in ("trunk",) + POINT_KEYS}
+    pose["foot_l"], pose["foot_r"] = frames["foot_l"][i], frames["foot_r"][i]
+    return pose
+
+
+def walk_label(walk):
+    """Legend text for a walk: gait, run and fitness."""
+    return f"best {walk['gait']} ({walk['run']}), fitness {walk['fitness']:.1f}"
+
+
+def legend_above(ax, ncol=1, title=None):
+    """A legend above the axes, left-aligned, so it never hides data."""
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=ncol, title=title,
+              title_fontsize=8, alignment="left", borderaxespad=0.0,
+              handlelength=1.5, columnspacing=1.0)
+
+
+def present_walks(walks):
+    """[(gait, walk)] for the non-null walks, biped first."""
+    return [(g, walks[g]) for g in GAIT_COLOURS if walks[g] is not None]
+
+
+def fig4a(walks, out_dir):
+    """Distance walked (leg lengths) over time for the best biped and tripod."""
+    fig, ax = plt.subplots(figsize=(SINGLE, 2.5), layout="constrained")
+    for gait, walk in present_walks(walks):
+        f = walk["frames"]
+        ax.plot(f["t"], np.asarray(f["distance"], float) / walk["leg_length"],
+                color=GAIT_COLOURS[gait], label=walk_label(walk))
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("distance (leg lengths)")
+    ax.set_xlim(left=0)
+    ax.grid(alpha=0.3, lw=0.5)
+    legend_above(ax)
+    save(fig, out_dir, "fig4a")
+
+
+def film_layout(walk, indices):
+    """Per-snapshot x shifts: 0 (true positions) unless the walker hardly moves,
+    then snapshots are spread evenly; returns (shifts, spread?)."""
+    body, frames = walk["body"], walk["frames"]
+    ext = [walker_extent(body, frame_pose(frames, i)) for i in indices]
+    width = max(e[1] - e[0] for e in ext)
+    moved = ext[-1][0] - ext[0][0]
+    if moved >= 0.5 * width or len(indices) < 2:
+        return np.zeros(len(indices)), False
+    step = 1.1 * width
+    return np.array([k * step - (e[0] - ext[0][0]) for k, e in enumerate(ext)]), True
+
+
+def fig4b(walks, out_dir):
+    """Filmstrip: a snapshot every 0.5 s over the first 5 s, biped above tripod."""
+    rows = present_walks(walks)
+    plans = []
+    for gait, walk in rows:
+        t = np.asarray(walk["frames"]["t"], float)
+        times = np.arange(0.0, min(FILM_END_S, t[-1]) + 1e-9, FILM_STEP_S)
+        idx = [int(np.argmin(np.abs(t - s))) for s in times]
+        shifts, spread = film_layout(walk, idx)
+        ext = np.array([walker_extent(walk["body"], frame_pose(walk["frames"], i))
+                        for i in idx])
+        box_ = (ext[:, 0] + shifts).min(), (ext[:, 1] + shifts).max(), \
+            min(ext[:, 2].min(), 0.0), ext[:, 3].max()
+        plans.append((gait, walk, times, idx, shifts, spread, box_))
+    span_x = max(p[6][1] - p[6][0] for p in plans) + 0.3
+    span_y = max(p[6][3] - p[6][2] for p in plans) + 0.3
+    fig, axes = plt.subplots(len(plans), 1, squeeze=False, layout="constrained",
+                             figsize=(DOUBLE, len(plans) * (0.62 + max(
+                                 0.5, min(2.6, 6.2 * span_y / span_x)))))
+    for ax, (gait, walk, times, idx, shifts, spread, bx) in zip(axes[:, 0], plans):
+        cmap = plt.get_cmap(GAIT_CMAPS[gait])
+        for k, (i, dx) in enumerate(zip(idx, shifts)):
+            colour = cmap(0.3 + 0.7 * k / max(1, len(idx) - 1))
+            draw_walker(ax, walk["body"], frame_pose(walk["frames"], i), colour, dx=dx,
+                        knees=False, lw=0.8, zorder=2 + k)
+        ground(ax)
+        x0, y0 = bx[0] - 0.15, bx[2] - 0.15
+        ax.set_xlim(x0, x0 + span_x)
+        ax.set_ylim(y0, y0 + span_y)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)" + (", snapshots spread evenly for clarity" if spread
+                                 else ""))
+        ax.set_ylabel("y (m)")
+        ax.set_title(f"{walk_label(walk)}: snapshots every {FILM_STEP_S:g} s, "
+                     f"0-{times[-1]:g} s (light = early)", loc="left")
+        sm = matplotlib.cm.ScalarMappable(
+            cmap=matplotlib.colors.LinearSegmentedColormap.from_list(
+                gait, [cmap(0.3), cmap(1.0)]),
+            norm=matplotlib.colors.Normalize(0, times[-1]))
+        fig.colorbar(sm, ax=ax, label="time (s)", aspect=12, pad=0.01)
+    save(fig, out_dir, "fig4b")
+
+
+def fig5(gallery, out_dir):
+    """Gallery of individuals: bipeds on the top row, tripods below, same scale."""
+    rows = [[p for p in gallery if p["gait"] == g] for g in GAIT_COLOURS]
+    ncols = max(1, *(len(r) for r in rows))
+    ext = [walker_extent(p["body"], p["pose"]) for p in gallery]
+    span_x = max(e[1] - e[0] for e in ext) + 0.2
+    span_y = max(max(e[3] for e in ext) - min(0.0, *(e[2] for e in ext)), 0.5) + 0.4
+    panel_w = (DOUBLE - 0.3) / ncols
+    fig, axes = plt.subplots(2, ncols, squeeze=False, layout="constrained",
+                             figsize=(DOUBLE, 2 * (panel_w * span_y / span_x + 0.4)))
+    for r, (gait, people) in enumerate(zip(GAIT_COLOURS, rows)):
+        for c in range(ncols):
+            ax = axes[r, c]
+            ax.set_xticks([])
+            ax.set_yticks([])
+            for side in ax.spines.values():
+                side.set_visible(False)
+            if c >= len(people):
+                if c == 0:
+                    no_data(ax, f"no {gait}s: no data")
+                else:
+                    ax.set_visible(False)
+                continue
+            p = people[c]
+            e = walker_extent(p["body"], p["pose"])
+            draw_walker(ax, p["body"], p["pose"], GAIT_COLOURS[gait], lw=0.9)
+            ground(ax)
+            mid = 0.5 * (e[0] + e[1])
+            ax.set_xlim(mid - span_x / 2, mid + span_x / 2)
+            y0 = min(0.0, e[2]) - 0.3                     # ground band holds the bar
+            ax.set_ylim(y0, y0 + span_y)
+            ax.set_aspect("equal")
+            ax.set_title(f"{p['label']}\nfitness {p['fitness']:.1f}")
+            if r == len(rows) - 1 - (not rows[1]) and c == 0:
+                scale_bar(ax, mid - span_x / 2 + 0.1, y0 + 0.13)
+        axes[r, 0].set_ylabel(f"{gait}s", color=GAIT_COLOURS[gait], fontsize=9)
+        axes[r, 0].yaxis.label.set_visible(True)
+    save(fig, out_dir, "fig5")
+
+
+def fig6(walks, out_dir):
+    """Relative CoG height and CoG velocities in leg lengths (per second)."""
+    fig, axes = plt.subplots(3, 1, sharex=True, figsize=(SINGLE, 4.6),
+                             layout="constrained")
+    for gait, walk in present_walks(walks):
+        f, leg = walk["frames"], walk["leg_length"]
+        com, vel = np.asarray(f["com"], float), np.asarray(f["com_velocity"], float)
+        series = ((com[:, 1] - com[0, 1]) / leg, vel[:, 0] / leg, vel[:, 1] / leg)
+        for ax, y in zip(axes, series):
+            ax.plot(f["t"], y, color=GAIT_COLOURS[gait], lw=0.8, label=walk_label(walk))
+    labels = ("rel. CoG height\n(leg lengths)", "horizontal velocity\n(leg lengths/s)",
+              "vertical velocity\n(leg lengths/s)")
+    for ax, label in zip(axes, labels):
+        ax.set_ylabel(label)
+        ax.axhline(0.0, color="0.5", lw=0.5)
+        ax.grid(alpha=0.3, lw=0.5)
+    legend_above(axes[0])
+    axes[-1].set_xlabel("time (s)")
+    axes[-1].set_xlim(left=0)
+    save(fig, out_dir, "fig6")
+
+
+def pick_fig7_run(runs, walks):
+    """The run of the best biped, else the run with the highest final best_fitness."""
+    if walks is not None and walks["biped"] is not None:
+        for run in runs:
+            if run["dir"] == walks["biped"]["run"] or \
+                    f"{run['case']}-{run['replicate']}" == walks["biped"]["run"]:
+                return run, "run of the best biped"
+        warn(f"walks.json: best biped's run '{walks['biped']['run']}' is not in "
+             "summary.json; fig7 uses the run with the highest final fitness")
+    best = max(runs, key=lambda r: r["data"]["best_fitness"][-1])
+    return best, "run with the highest final fitness"
+
+
+def fig7(runs, walks, out_dir):
+    """Body, femur and tibia length of the best individual per generation."""
+    run, why = pick_fig7_run(runs, walks)
+    d = run["data"]
+    g = d["generation"]
+    fig, ax = plt.subplots(figsize=(SINGLE, 2.6), layout="constrained")
+    tripod = np.array([x == "tripod" for x in d["best_gait"]])
+    if tripod.any():
+        ax.fill_between(g, 0, 1, where=tripod, step="mid", color="tab:red", alpha=0.12,
+                        lw=0, transform=ax.get_xaxis_transform(),
+                        label="tripod gait")
+    ax.plot(g, 2 * d["best_half_body_x"], color="k", label="body")
+    ax.plot(g, d["best_femur"], color="tab:cyan", label="femur")
+    ax.plot(g, d["best_tibia"], color="tab:brown", label="tibia")
+    ax.set_xlabel("generation")
+    ax.set_ylabel("length (m)")
+    ax.set_xlim(g[0], g[-1])
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3, lw=0.5)
+    legend_above(ax, ncol=4 if tripod.any() else 3, title=f"{run['dir']} ({why})")
+    save(fig, out_dir, "fig7")
+
+
+def runs_by_case(runs):
+    """{case: [runs sorted by replicate]} for every case, possibly empty."""
+    return {c: sorted((r for r in runs if r["case"] == c), key=lambda r: r["replicate"])
+            for c in CASES}
+
+
+def fig8(runs, replicates, out_dir):
+    """Grid (rows = cases, columns = replicates) of best fitness coloured by gait."""
+    grouped = runs_by_case(runs)
+    ncols = max(1, replicates)
+    fig, axes = plt.subplots(len(CASES), ncols, sharex=True, sharey=True, squeeze=False,
+                             figsize=(DOUBLE, 1.15 + 1.45 * len(CASES)),
+                             layout="constrained")
+    gmax = max([r["data"]["generation"][-1] for r in runs] + [1])
+    for row, case in enumerate(CASES):
+        by_rep = {r["replicate"]: r for r in grouped[case]}
+        for col in range(ncols):
+            ax = axes[row, col]
+            ax.set_title(f"Case {row + 1} ({case}), replicate {col + 1}")
+            run = by_rep.get(col + 1)
+            if run is None:
+                ax.text(0.5, 0.5, "no data", ha="center", va="center",
+                        transform=ax.transAxes, color="0.4")
+                continue
+            d = run["data"]
+            x, y = d["generation"], d["best_fitness"]
+            colours = [GAIT_COLOURS[gait] for gait in d["best_gait"]]
+            if len(x) > 1:
+                seg = np.stack([np.column_stack([x[:-1], y[:-1]]),
+                                np.column_stack([x[1:], y[1:]])], axis=1)
+                ax.add_collection(LineCollection(seg, colors=colours[1:], lw=1.2))
+            else:
+                ax.scatter(x, y, c=colours, s=6)
+            ax.grid(alpha=0.3, lw=0.5)
+        axes[row, 0].set_ylabel("best fitness\n(leg lengths)")
+    for ax in axes[-1]:
+        ax.set_xlabel("generation")
+    axes[0, 0].set_xlim(0, gmax)
+    ymax = max([float(np.nanmax(r["data"]["best_fitness"])) for r in runs] + [1.0])
+    axes[0, 0].set_ylim(0, 1.05 * ymax)
+    handles = [Line2D([], [], color=c, lw=1.5, label=f"best is a {g}")
+               for g, c in GAIT_COLOURS.items()]
+    axes[0, 0].legend(handles=handles, loc="upper left", frameon=True,
+                      framealpha=0.85, edgecolor="none")
+    save(fig, out_dir, "fig8")
+
+
+def case_stats(case, runs):
+    """(generations, mean, std) of best_fitness over a case's replicates."""
+    n = min(len(r["data"]["best_fitness"]) for r in runs)
+    if any(len(r["data"]["best_fitness"]) != n for r in runs):
+        warn(f"fig9: {case} runs have different lengths; using their first {n} "
+             "generations")
+    y = np.stack([r["data"]["best_fitness"][:n] for r in runs])
+    std = y.std(axis=0, ddof=1) if len(runs) > 1 else np.zeros(n)
+    return runs[0]["data"]["generation"][:n], y.mean(axis=0), std
+
+
+def fig9(runs, out_dir):
+    """Mean +- sample standard deviation of best fitness per generation, per case."""
+    fig, ax = plt.subplots(figsize=(SINGLE, 3.1), layout="constrained")
+    for case, group in runs_by_case(runs).items():
+        colour = CASE_COLOURS[case]
+        if not group:
+            ax.plot([], [], color=colour, label=f"{CASE_LABELS[case]} (no data)")
+            continue
+        g, mean, std = case_stats(case, group)
+        ax.plot(g, mean, color=colour, label=f"{CASE_LABELS[case]} (n = {len(group)})")
+        if len(group) > 1:
+            ax.fill_between(g, mean - std, mean + std, color=colour, alpha=0.2, lw=0)
+    ax.set_xlabel("generation")
+    ax.set_ylabel("best fitness (leg lengths)")
+    ax.set_xlim(left=0)
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3, lw=0.5)
+    legend_above(ax, title="best fitness, mean ± s.d. over replicates")
+    save(fig, out_dir, "fig9")
+
+
+# ----------------------------------------------------------------------------- main
+
+def draw_all(inputs, out_dir):
+    """Draw every figure whose data is present; warn about the rest."""
+    runs, walks, gallery = inputs["runs"], inputs["walks"], inputs["gallery"]
+    if walks is None:
+        warn("walks.json not found: skipping fig4a, fig4b, fig6")
+    elif not present_walks(walks):
+        warn("walks.json: both walks are null: skipping fig4a, fig4b, fig6")
+    else:
+        for gait in GAIT_COLOURS:
+            if walks[gait] is None:
+                warn(f"walks.json: no {gait} (null): fig4a, fig4b, fig6 show the "
+                     "other walker only")
+        fig4a(walks, out_dir)
+        fig4b(walks, out_dir)
+        fig6(walks, out_dir)
+    if gallery is None:
+        warn("gallery.json not found: skipping fig5")
+    elif not gallery:
+        warn("gallery.json: no individuals: skipping fig5")
+    else:
+        fig5(gallery, out_dir)
+    if not runs:
+        warn("summary.json lists no runs: skipping fig7, fig8, fig9")
+        return
+    for case, group in runs_by_case(runs).items():
+        if not group:
+            warn(f"summary.json: no runs for case '{case}': fig8 and fig9 say 'no data'")
+    fig7(runs, walks, out_dir)
+    fig8(runs, inputs["replicates"], out_dir)
+    fig9(runs, out_dir)
+
+
+def main(argv=None):
+    """Parse arguments, load and check the inputs, draw; returns the exit status."""
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("run_dir", help="reproduction directory (with summary.json)")
+    args = parser.parse_args(argv)
+    try:
+        inputs = load_run_dir(args.run_dir)
+    except InputError as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 1
+    out_dir = os.path.join(args.run_dir, "figures")
+    os.makedirs(out_dir, exist_ok=True)
+    with plt.rc_context(STYLE):
+        draw_all(inputs, out_dir)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# A tiny reproduction (3 generations, 1 replicate) must write every file; the
+# replay command's HTML must load in headless Chromium without console errors
+# and draw its canvas, and its SVG must parse.
+# Usage: reproduce_test.sh WALKERS_BINARY SOURCE_DIR PYTHON
+set -u
+walkers=$1
+src=$2
+python=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --threads 2 --out "$tmp/rep" >"$tmp/out.txt" 2>&1 ||
+  { cat "$tmp/out.txt"; fail "walkers reproduce exited non-zero"; }
+for f in summary.json summary.md walks.json gallery.json; do
+  [ -s "$tmp/rep/$f" ] || fail "no $f"
+done
+for run in free-1 time-1 performance-1; do
+  for f in config.json generations.csv evaluations.csv archive.json best.json; do
+    [ -s "$tmp/rep/$run/$f" ] || fail "no $run/$f"
+  done
+done
+for fig in fig4a fig4b fig5 fig6 fig7 fig8 fig9; do
+  for ext in png svg; do
+    [ -s "$tmp/rep/figures/$fig.$ext" ] || fail "no figures/$fig.$ext"
+  done
+done
+"$python" - "$tmp/rep" <<'PY' || fail "summary.json lacks a statistic"
+import json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))
+for key in ("cases", "case3_over_case1_share", "case2_over_case1_final", "biped_over_tripod", "runs", "evals_per_s"):
+    assert key in s, key
+assert set(s["cases"]) == {"free", "time", "performance"}, s["cases"].keys()
+assert len(s["runs"]) == 3
+PY
+# resuming a finished reproduction redoes only the statistics and figures
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume >"$tmp/again.txt" 2>&1 ||
+  { cat "$tmp/again.txt"; fail "resuming the finished reproduction failed"; }
+grep -q "done already" "$tmp/again.txt" || fail "resume did not find the runs done"
+"$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" >/dev/null 2>&1 && fail "overwrote a reproduction without --resume"
+
+# replay: the animation in a real browser, the filmstrip as XML
+genome=$src/data/genomes/default.json
+"$walkers" replay --genome "$genome" --out "$tmp/walk.html" >/dev/null || fail "replay to HTML"
+"$walkers" replay --genome "$genome" --out "$tmp/walk.svg" >/dev/null || fail "replay to SVG"
+"$python" -c "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])" "$tmp/walk.svg" || fail "the SVG does not parse"
+"$python" "$src/tests/replay/check_replay.py" "$tmp/walk.html" || fail "the replay page in headless Chromium"
+"$walkers" replay --genome "$genome" --out "$tmp/walk.png" >/dev/null 2>&1 && fail "accepted an unknown replay format"
+
+[ $failures -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
+echo "reproduce and replay checks passed"

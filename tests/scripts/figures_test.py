@@ -1,0 +1,318 @@
+#!/usr/bin/env python3
+"""Tests for scripts/figures.py on a small synthetic reproduction directory.
+
+Run:  /usr/bin/python3 tests/scripts/figures_test.py   (needs numpy and matplotlib)
+
+Each test writes a RUN_DIR (3 cases x 2 replicates x 60 generations, walks of
+451 frames, a gallery of 6 individuals) to a temporary directory, runs the script
+as a subprocess with the same interpreter and checks its outputs and exit status.
+"""
+import csv
+import importlib.util
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image as mpimg  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCRIPT = os.path.join(ROOT, "scripts", "figures.py")
+ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9")
+WALK_FIGS = ("fig4a", "fig4b", "fig6")
+CASES = ("free", "time", "performance")
+REPLICATES, GENERATIONS, FRAMES = 2, 60, 451
+
+
+# ----------------------------------------------------------------------------- data
+
+def body(half_body_x, femur, tibia, half_foot_x):
+    """A body dict in the walks.json / gallery.json format."""
+    return {"half_body_x": half_body_x, "half_body_y": 0.12, "half_foot_x": half_foot_x,
+            "half_foot_y": 0.04, "femur_length": femur, "tibia_length": tibia,
+            "knee_radius": 0.1}
+
+
+def knee(hip, ankle, femur, tibia):
+    """Two-link inverse kinematics: the knee point, bent forward."""
+    hip, ankle = np.asarray(hip, float), np.asarray(ankle, float)
+    d = ankle - hip
+    dist = min(np.linalg.norm(d), 0.999 * (femur + tibia))
+    a = (femur ** 2 - tibia ** 2 + dist ** 2) / (2 * dist)
+    h = math.sqrt(max(femur ** 2 - a ** 2, 0.0))
+    u = d / np.linalg.norm(d)
+    normal = np.array([-u[1], u[0]])            # left of hip->ankle = forward when down
+    return hip + a * u + h * normal
+
+
+def pose(b, hip, ankle_l, ankle_r, pitch, trunk_dx):
+    """A pose dict (lists) with the trunk centred trunk_dx behind the hip."""
+    c, s = math.cos(pitch), math.sin(pitch)
+    trunk = [hip[0] - trunk_dx * c, hip[1] - trunk_dx * s, pitch]
+    f, t = b["femur_length"], b["tibia_length"]
+    return {"trunk": trunk, "hip": list(hip),
+            "knee_l": knee(hip, ankle_l, f, t).tolist(), "ankle_l": list(ankle_l),
+            "foot_l": 0.0,
+            "knee_r": knee(hip, ankle_r, f, t).tolist(), "ankle_r": list(ankle_r),
+            "foot_r": 0.0}
+
+
+def walk(gait, run, speed, b, fitness):
+    """A synthetic 15-s walk (451 frames at 30 Hz) in the walks.json format."""
+    leg = b["femur_length"] + b["tibia_length"]
+    t = np.linspace(0.0, 15.0, FRAMES)
+    hip_x = speed * t + 0.02 * np.sin(4 * t)
+    hip_y = 0.9 * leg + 0.03 * np.cos(8 * t)
+    ank_l_x = hip_x + 0.25 * np.sin(4 * t)
+    ank_r_x = hip_x - 0.25 * np.sin(4 * t)
+    ank_l_y = b["half_foot_y"] + np.maximum(0.0, 0.08 * np.sin(4 * t))
+    ank_r_y = b["half_foot_y"] + np.maximum(0.0, -0.08 * np.sin(4 * t))
+    pitch = 0.3 if gait == "tripod" else 0.0
+    trunk_dx = b["half_body_x"] * 0.9 if gait == "tripod" else 0.0
+    frames = {k: [] for k in ("trunk", "hip", "knee_l", "ankle_l", "foot_l", "knee_r",
+                              "ankle_r", "foot_r")}
+    for i in range(FRAMES):
+        p = pose(b, (hip_x[i], hip_y[i]), (ank_l_x[i], ank_l_y[i]),
+                 (ank_r_x[i], ank_r_y[i]), pitch, trunk_dx)
+        for k in frames:
+            frames[k].append(p[k])
+    com = np.column_stack([hip_x - 0.1, hip_y - 0.2])
+    vel = np.gradient(com, t, axis=0)
+    frames.update({
+        "t": t.tolist(), "state": ["DS"] * FRAMES, "x_target": (hip_x + 0.1).tolist(),
+        "planted_l": (ank_l_y <= b["half_foot_y"]).tolist(),
+        "planted_r": (ank_r_y <= b["half_foot_y"]).tolist(),
+        "distance": np.minimum(ank_l_x, ank_r_x).tolist(),
+        "com": com.tolist(), "com_velocity": vel.tolist()})
+    return {"title": f"best {gait}", "run": run, "id": "50/3", "fitness": fitness,
+            "gait": gait, "leg_length": leg, "preset": "original", "body": b,
+            "frames": frames}
+
+
+def gallery():
+    """Six individuals (three bipeds, three tripods) standing at x = 0."""
+    people = []
+    for k, (gait, hbx) in enumerate([("biped", 0.5), ("biped", 0.2), ("biped", 0.04),
+                                     ("tripod", 0.9), ("tripod", 0.7), ("tripod", 0.5)]):
+        b = body(hbx, 0.45 + 0.02 * k, 0.6 + 0.03 * k, 0.25 - 0.03 * (k % 3))
+        leg = b["femur_length"] + b["tibia_length"]
+        hip = (0.05, 0.93 * leg)
+        trunk_dx = 0.9 * hbx if gait == "tripod" else 0.0
+        people.append({"label": f"performance-{k % 2 + 1} gen {20 * k}",
+                       "run": f"performance-{k % 2 + 1}", "id": f"{20 * k}/1",
+                       "gait": gait, "fitness": 5.0 + k, "body": b,
+                       "pose": pose(b, hip, (0.0, 0.04), (0.0, 0.04),
+                                    0.3 if gait == "tripod" else 0.0, trunk_dx)})
+    return {"individuals": people}
+
+
+def write_generations(path, seed, tripod_until):
+    """60 generations of plausible evolution: fitness up, body shrinking."""
+    rng = np.random.default_rng(seed)
+    header = ["generation", "best_fitness", "ave_best3", "archive_mean",
+              "ceiling_half_body_x", "best_half_body_x", "best_femur", "best_tibia",
+              "best_gait", "falls", "evals_per_s"]
+    fit = 4.0 + np.maximum.accumulate(np.cumsum(rng.uniform(0, 0.3, GENERATIONS)))
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        for g in range(GENERATIONS):
+            hbx = 0.9 * math.exp(-g / 25) + 0.035
+            w.writerow([g, fit[g], fit[g] - 0.5, fit[g] - 2, 0.9, hbx,
+                        0.53 + 0.001 * g, 0.68 + 0.002 * g,
+                        "tripod" if g < tripod_until else "biped", 3, 40.0])
+
+
+def make_run_dir(root):
+    """Write a complete synthetic RUN_DIR under root; returns its path."""
+    run_dir = os.path.join(root, "repro")
+    os.makedirs(run_dir)
+    runs = []
+    for c, case in enumerate(CASES):
+        for rep in range(1, REPLICATES + 1):
+            name = f"{case}-{rep}"
+            os.makedirs(os.path.join(run_dir, name))
+            write_generations(os.path.join(run_dir, name, "generations.csv"),
+                              seed=10 * c + rep, tripod_until=15 * (c + rep))
+            runs.append({"case": case, "replicate": rep, "dir": name})
+    write_json(os.path.join(run_dir, "summary.json"),
+               {"preset": "original", "generations": GENERATIONS,
+                "replicates": REPLICATES, "runs": runs})
+    write_json(os.path.join(run_dir, "walks.json"), {
+        "biped": walk("biped", "performance-2", 1.0, body(0.04, 0.45, 0.75, 0.08), 12.3),
+        "tripod": walk("tripod", "time-1", 0.7, body(0.85, 0.5, 0.6, 0.25), 8.9)})
+    write_json(os.path.join(run_dir, "gallery.json"), gallery())
+    return run_dir
+
+
+def write_json(path, obj):
+    """Dump obj as JSON to path."""
+    with open(path, "w") as f:
+        json.dump(obj, f)
+
+
+def edit_json(path, change):
+    """Load a JSON file, apply change(obj) in place and write it back."""
+    with open(path) as f:
+        obj = json.load(f)
+    change(obj)
+    write_json(path, obj)
+
+
+# ----------------------------------------------------------------------------- tests
+
+class FiguresTest(unittest.TestCase):
+    """Runs scripts/figures.py on synthetic inputs."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.run_dir = make_run_dir(self.tmp.name)
+        self.fig_dir = os.path.join(self.run_dir, "figures")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def run_script(self, expect_rc=0):
+        """Run the script; assert its exit status; return stderr."""
+        proc = subprocess.run([sys.executable, SCRIPT, self.run_dir], text=True,
+                              capture_output=True, timeout=300)
+        self.assertEqual(proc.returncode, expect_rc,
+                         f"stdout:\n{proc.stdout}\nstderr:\n{proc.stderr}")
+        self.assertNotIn("Traceback", proc.stderr)
+        return proc.stderr
+
+    def assert_figure(self, name):
+        """NAME.png decodes, is a paper width at 200 dpi and not blank; NAME.svg parses."""
+        png = os.path.join(self.fig_dir, name + ".png")
+        svg = os.path.join(self.fig_dir, name + ".svg")
+        for path in (png, svg):
+            self.assertTrue(os.path.isfile(path), path)
+            self.assertGreater(os.path.getsize(path), 0, path)
+        img = mpimg.imread(png)
+        self.assertIn(img.shape[1], (700, 1400), f"{png}: width {img.shape[1]} px")
+        self.assertGreaterEqual(img.shape[0], 200, png)
+        rgb = img[..., :3]
+        ink = np.any(rgb < 0.9, axis=-1).mean()
+        self.assertGreater(ink, 0.01, f"{png} looks blank")
+        self.assertGreater(len(np.unique(rgb.reshape(-1, 3), axis=0)), 16, png)
+        root = ET.parse(svg).getroot()
+        self.assertTrue(root.tag.endswith("svg"), svg)
+
+    def svg_text(self, name):
+        """The SVG source (text is drawn as paths, each preceded by a comment)."""
+        with open(os.path.join(self.fig_dir, name + ".svg")) as f:
+            return f.read()
+
+    def assert_absent(self, name):
+        """Neither NAME.png nor NAME.svg was written."""
+        for ext in ("png", "svg"):
+            self.assertFalse(os.path.exists(os.path.join(self.fig_dir, f"{name}.{ext}")))
+
+    def test_all_figures_written(self):
+        stderr = self.run_script()
+        self.assertNotIn("warning", stderr)
+        for name in ALL:
+            self.assert_figure(name)
+        self.assertIn("performance-2", self.svg_text("fig7"))   # the best biped's run
+
+    def test_missing_walks_skips_walk_figures(self):
+        os.remove(os.path.join(self.run_dir, "walks.json"))
+        stderr = self.run_script()
+        self.assertIn("walks.json not found", stderr)
+        for name in WALK_FIGS:
+            self.assertIn(name, stderr)
+            self.assert_absent(name)
+        for name in ("fig5", "fig7", "fig8", "fig9"):
+            self.assert_figure(name)
+        self.assertIn("highest final fitness", self.svg_text("fig7"))
+
+    def test_missing_gallery_skips_fig5(self):
+        os.remove(os.path.join(self.run_dir, "gallery.json"))
+        stderr = self.run_script()
+        self.assertIn("gallery.json not found", stderr)
+        self.assert_absent("fig5")
+        for name in ALL:
+            if name != "fig5":
+                self.assert_figure(name)
+
+    def test_case_without_runs_says_no_data(self):
+        edit_json(os.path.join(self.run_dir, "summary.json"),
+                  lambda s: s.update(runs=[r for r in s["runs"] if r["case"] != "time"]))
+        stderr = self.run_script()
+        self.assertIn("no runs for case 'time'", stderr)
+        for name in ALL:
+            self.assert_figure(name)
+        self.assertIn("no data", self.svg_text("fig8"))
+        self.assertIn("Case 2 time-constrained (no data)", self.svg_text("fig9"))
+
+    def test_null_tripod_skips_only_tripod_parts(self):
+        edit_json(os.path.join(self.run_dir, "walks.json"),
+                  lambda w: w.update(tripod=None))
+        stderr = self.run_script()
+        self.assertIn("no tripod", stderr)
+        for name in ALL:
+            self.assert_figure(name)
+        for name in WALK_FIGS:
+            text = self.svg_text(name)
+            self.assertIn("best biped", text, name)
+            self.assertNotIn("best tripod", text, name)
+
+    def test_both_walks_null_skip_walk_figures(self):
+        edit_json(os.path.join(self.run_dir, "walks.json"),
+                  lambda w: w.update(biped=None, tripod=None))
+        stderr = self.run_script()
+        self.assertIn("both walks are null", stderr)
+        for name in WALK_FIGS:
+            self.assert_absent(name)
+        for name in ("fig5", "fig7", "fig8", "fig9"):
+            self.assert_figure(name)
+
+    def test_missing_summary_is_an_error(self):
+        os.remove(os.path.join(self.run_dir, "summary.json"))
+        stderr = self.run_script(expect_rc=1)
+        self.assertIn("summary.json: file not found", stderr)
+        self.assertFalse(os.path.exists(self.fig_dir))
+
+    def test_missing_generations_is_an_error(self):
+        path = os.path.join(self.run_dir, "free-2", "generations.csv")
+        os.remove(path)
+        stderr = self.run_script(expect_rc=1)
+        self.assertIn(f"{path}: file not found", stderr)
+
+    def test_bad_number_names_file_and_line(self):
+        path = os.path.join(self.run_dir, "time-1", "generations.csv")
+        with open(path) as f:
+            lines = f.readlines()
+        lines[3] = lines[3].replace(lines[3].split(",")[1], "oops", 1)
+        with open(path, "w") as f:
+            f.writelines(lines)
+        stderr = self.run_script(expect_rc=1)
+        self.assertIn(f"{path}: line 4, column best_fitness: 'oops'", stderr)
+
+    def test_inconsistent_walk_frames_is_an_error(self):
+        edit_json(os.path.join(self.run_dir, "walks.json"),
+                  lambda w: w["biped"]["frames"]["com"].pop())
+        stderr = self.run_script(expect_rc=1)
+        self.assertIn("walks.json: 'biped.frames.com' has 450 entries", stderr)
+
+    def test_font_sizes_are_at_least_8_pt(self):
+        spec = importlib.util.spec_from_file_location("figures", SCRIPT)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        sizes = {k: v for k, v in module.STYLE.items() if k.endswith("size")}
+        self.assertTrue(sizes)
+        for key, size in sizes.items():
+            self.assertGreaterEqual(size, 8, key)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
