@@ -1,11 +1,19 @@
 // Kernels of the dynamics and a short planted simulation.
 #include <benchmark/benchmark.h>
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <Eigen/Cholesky>
 
 #include "control/genome.h"
 #include "control/start_pose.h"
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/integrator.h"
 #include "dynamics/jacobian.h"
+#include "dynamics/schur_linear_solver.h"
 #include "dynamics/observation.h"
 
 namespace walkers {
@@ -77,6 +85,91 @@ BENCHMARK_F(PlantedWalker, AccelerationJacobian)(benchmark::State& st) {
   }
   st.SetItemsProcessed(st.iterations());
 }
+
+// the mass matrix's factorisation and one solve: ours against Eigen's LLT
+BENCHMARK_F(PlantedWalker, MassMatrixSolve_Cholesky9)(benchmark::State& st) {
+  ComputeKinematics(model_, state_.q, state_.v, &workspace_.kin);
+  MassMatrix(model_, workspace_.kin, &workspace_.M);
+  Cholesky9 cholesky;
+  for (auto _ : st) {
+    cholesky.Compute(workspace_.M);
+    Vec9 x = Vec9::Ones();
+    cholesky.SolveInPlace(&x);
+    benchmark::DoNotOptimize(x);
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
+BENCHMARK_F(PlantedWalker, MassMatrixSolve_EigenLLT)(benchmark::State& st) {
+  ComputeKinematics(model_, state_.q, state_.v, &workspace_.kin);
+  MassMatrix(model_, workspace_.kin, &workspace_.M);
+  Eigen::LLT<Mat9> llt(kNumCoords);
+  for (auto _ : st) {
+    llt.compute(workspace_.M);
+    Vec9 x = llt.solve(Vec9::Ones());
+    benchmark::DoNotOptimize(x);
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
+// ground contact of every point, at a state where the trunk and feet touch
+BENCHMARK_F(PlantedWalker, ContactForces)(benchmark::State& st) {
+  State lying = state_;
+  Integrator integrator(model_);
+  integrator.Reset(0.0, StartState(model_), inputs_);
+  integrator.AdvanceTo(1.5);  // collapsed: the trunk lies on the ground
+  lying = integrator.state();
+  ComputeKinematics(model_, lying.q, lying.v, &workspace_.kin);
+  int touching = 0;
+  for (const ContactSample& s : SampleContacts(model_, workspace_.kin)) touching += s.depth > 0 ? 1 : 0;
+  for (auto _ : st) {
+    Vec9 Q = Vec9::Zero();
+    AddGroundContactForces(model_, workspace_.kin, &Q);
+    benchmark::DoNotOptimize(Q);
+  }
+  st.SetItemsProcessed(st.iterations());
+  st.counters["points_touching"] = touching;
+}
+
+// CVODE's Newton system I - gamma J (18x18) from the analytic Jacobian:
+// setup (factorisation) and one solve, Schur complement against dense LU
+void NewtonLinearSolve(benchmark::State& st, bool schur) {
+  const Model model = BuildModel(BodyOf(DefaultGenome()));
+  const State start = StartState(model);
+  Inputs inputs;
+  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(model, start, leg);
+  Workspace ws;
+  Mat9 da_dq, da_dv;
+  AccelerationJacobian(model, inputs, start.q, start.v, &ws, &da_dq, &da_dv);
+  const double gamma = 1e-3;
+  SUNContext context;
+  SUNContext_Create(nullptr, &context);
+  N_Vector x = N_VNew_Serial(18, context), b = N_VNew_Serial(18, context);
+  SUNMatrix A = SUNDenseMatrix(18, 18, context), work = SUNDenseMatrix(18, 18, context);
+  SUNLinearSolver solver = schur ? MakeSchurLinearSolver(x, work, context) : SUNLinSol_Dense(x, work, context);
+  SUNLinSolInitialize(solver);
+  Eigen::Map<Eigen::Matrix<double, 18, 18>> M(SUNDenseMatrix_Data(A));
+  M.setIdentity();
+  M.topRightCorner<9, 9>() -= gamma * Mat9::Identity();
+  M.bottomLeftCorner<9, 9>() = -gamma * da_dq;
+  M.bottomRightCorner<9, 9>() -= gamma * da_dv;
+  N_VConst(1.0, b);
+  for (auto _ : st) {
+    SUNMatCopy(A, work);  // the dense solver factors in place, as CVODE lets it
+    SUNLinSolSetup(solver, work);
+    SUNLinSolSolve(solver, work, x, b, 0.0);
+    benchmark::DoNotOptimize(N_VGetArrayPointer(x)[0]);
+  }
+  st.SetItemsProcessed(st.iterations());
+  SUNLinSolFree(solver);
+  SUNMatDestroy(A);
+  SUNMatDestroy(work);
+  N_VDestroy(x);
+  N_VDestroy(b);
+  SUNContext_Free(&context);
+}
+BENCHMARK_CAPTURE(NewtonLinearSolve, schur_complement, true);
+BENCHMARK_CAPTURE(NewtonLinearSolve, dense_lu, false);
 
 // 1 s of the limp walker on planted feet, reporting at 30 Hz
 BENCHMARK_F(PlantedWalker, PlantedSimulation1s)(benchmark::State& st) {

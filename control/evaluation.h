@@ -20,7 +20,7 @@ const char* GaitName(Gait gait);
 
 // A walker whose trunk touches the ground in at least this fraction of the
 // ticks after the lock is a tripod (docs/model.md gives the reasons).
-constexpr double kTripodContactFraction = 0.25;
+constexpr double kTripodContactFraction = 0.10;
 
 struct EvaluationSettings {
   double duration = 15.0;  // [s]

@@ -30,7 +30,7 @@ struct IntegratorSettings {
   MultistepMethod method = MultistepMethod::kBdf;
   double relative_tolerance = 1e-6;           // [-]
   double absolute_tolerance_position = 1e-6;  // [m, rad]
-  double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
+  double absolute_tolerance_velocity = 1e-2;  // [m/s, rad/s] (docs/performance.md)
   int max_order = 5;                          // BDF: 1..5, Adams: 1..12
   JacobianSource jacobian = JacobianSource::kAnalytic;
   LinearSolver linear_solver = LinearSolver::kSchurComplement;

@@ -1,0 +1,76 @@
+// One 15 s evaluation per genome of the benchmark set, the whole set under
+// each numerical variant, and one generation of 16 on 2 threads.
+//
+//   evaluation_bench --benchmark_filter=Genome       per genome, production settings
+//   evaluation_bench --benchmark_filter=Variant      the choices of docs/performance.md
+//   evaluation_bench --benchmark_filter=Generation   16 children on 2 threads
+#include <benchmark/benchmark.h>
+
+#include "bench/genome_set.h"
+#include "bench/variants.h"
+#include "control/evaluation.h"
+#include "evolve/genetic_algorithm.h"
+
+namespace walkers::bench {
+namespace {
+
+void EvaluateGenome(benchmark::State& st, const Genome& genome) {
+  EvaluationResult r;
+  for (auto _ : st) {
+    r = Evaluate(genome, OriginalPreset());
+    benchmark::DoNotOptimize(r);
+  }
+  st.SetItemsProcessed(st.iterations());
+  st.counters["fitness"] = r.fitness;
+  st.counters["cvode_steps"] = static_cast<double>(r.cvode_steps);
+  st.counters["rhs_evals"] = static_cast<double>(r.rhs_evals);
+}
+
+// the whole set under one variant: items are evaluations
+void EvaluateSet(benchmark::State& st, const EvaluationSettings& settings) {
+  const auto genomes = BenchmarkGenomes();
+  long steps = 0;
+  for (auto _ : st) {
+    steps = 0;
+    for (const auto& [name, genome] : genomes) {
+      const EvaluationResult r = Evaluate(genome, OriginalPreset(), settings);
+      steps += r.cvode_steps;
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(genomes.size()));
+  st.counters["cvode_steps_per_eval"] = static_cast<double>(steps) / genomes.size();
+}
+
+// generation 0 of a run: the default genome and 15 mutants, on 2 threads
+void Generation(benchmark::State& st) {
+  GeneticAlgorithmConfig config;
+  Archive archive(config.archive_size);
+  std::set<GenomeKey> seen;
+  const std::vector<Individual> children = Breed(config, {1, 0, kBodyCeiling, MutationRules{}}, archive, &seen);
+  for (auto _ : st) {
+    std::vector<Individual> batch = children;
+    EvaluateAll(&batch, OriginalPreset(), EvaluationSettings{}, 2);
+    benchmark::DoNotOptimize(batch);
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(children.size()));
+}
+
+const bool kRegistered = [] {
+  for (const auto& [name, genome] : BenchmarkGenomes()) {
+    benchmark::RegisterBenchmark(("Genome/" + name).c_str(), EvaluateGenome, genome)->Unit(benchmark::kMillisecond);
+  }
+  for (const Variant& v : Variants()) {
+    // slow variants take seconds per set: a fixed small number of iterations
+    benchmark::RegisterBenchmark(("Variant/" + v.name).c_str(), EvaluateSet, v.settings)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+  }
+  benchmark::RegisterBenchmark("Generation/16_children_2_threads", Generation)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  return true;
+}();
+
+}  // namespace
+}  // namespace walkers::bench

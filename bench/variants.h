@@ -1,0 +1,49 @@
+// Numerical variants compared in docs/performance.md: each changes one choice
+// of the production settings (EvaluationSettings' defaults).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "control/evaluation.h"
+
+namespace walkers::bench {
+
+struct Variant {
+  std::string name;
+  EvaluationSettings settings;
+};
+
+inline std::vector<Variant> Variants() {
+  std::vector<Variant> v;
+  auto add = [&v](const std::string& name, auto change) {
+    EvaluationSettings s;
+    change(&s);
+    v.push_back({name, s});
+  };
+  add("production", [](EvaluationSettings*) {});
+  add("adams", [](EvaluationSettings* s) { s->integrator.method = MultistepMethod::kAdams; });
+  add("max_order_2", [](EvaluationSettings* s) { s->integrator.max_order = 2; });
+  add("max_order_3", [](EvaluationSettings* s) { s->integrator.max_order = 3; });
+  add("stability_limit_detection", [](EvaluationSettings* s) { s->integrator.stability_limit_detection = true; });
+  add("finite_difference_jacobian",
+      [](EvaluationSettings* s) { s->integrator.jacobian = JacobianSource::kFiniteDifference; });
+  add("dense_linear_solver", [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kDense; });
+  add("restart_every_tick", [](EvaluationSettings* s) { s->integrator.restart_on_torque_change = true; });
+  add("velocity_atol_1e-4", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-4; });
+  add("tolerances_1e-5", [](EvaluationSettings* s) {
+    s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 1e-5;
+  });
+  add("tolerances_1e-7", [](EvaluationSettings* s) {
+    s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 1e-7;
+  });
+  add("slip_velocity_0.05", [](EvaluationSettings* s) { s->contact.slip_velocity = 0.05; });
+  add("contact_dissipation_10", [](EvaluationSettings* s) { s->contact.dissipation = 10.0; });
+  add("weld_stiffness_1e8", [](EvaluationSettings* s) {
+    s->weld.stiffness = 1e8;
+    s->weld.angular_stiffness = 1e7;
+  });
+  return v;
+}
+
+}  // namespace walkers::bench
