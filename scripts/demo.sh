@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run the walker. Writes its results to runs/demo/.
+# The main job, short: set up, build, evolve the three scaffolds for 30
+# generations (one replicate each) with progress on the terminal, then write
+# the statistics and the paper's figures to runs/demo/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh
-mkdir -p runs/demo
-./build/app/walkers simulate --genome data/genomes/default.json --duration 5 --trajectory runs/demo/planted.csv
-echo "trajectory written to runs/demo/planted.csv"
+./build/app/walkers reproduce --generations 30 --replicates 1 --out runs/demo --resume
+./build/app/walkers replay --genome runs/demo/performance-1/best.json --out runs/demo/walk.html
+echo
+echo "statistics: runs/demo/summary.md"
+echo "figures:    runs/demo/figures/ (fig4a ... fig9, PNG and SVG)"
+echo "animation:  runs/demo/walk.html (open it in a browser)"
