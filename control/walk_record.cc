@@ -52,7 +52,6 @@ RecordedWalk RecordWalk(const Genome& genome, const Preset& preset, const std::s
                         const EvaluationSettings& settings) {
   const Model model = BuildModel(BodyOf(genome), ModelOptions{}, settings.contact, settings.weld);
   json frames = json::object();
-  double distance = 0.0;
   const TickObserver observer = [&](double t, const State& state, const WalkingController& controller) {
     Kinematics kin;
     ComputeKinematics(model, state.q, state.v, &kin);
@@ -62,8 +61,7 @@ RecordedWalk RecordWalk(const Genome& genome, const Preset& preset, const std::s
     AppendPose(kin, &frames);
     frames["planted_l"].push_back(controller.inputs().welds[kLeft].active);
     frames["planted_r"].push_back(controller.inputs().welds[kRight].active);
-    distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
-    frames["distance"].push_back(distance);
+    frames["distance"].push_back(std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x()));
     const CenterOfMass com = ComputeCenterOfMass(model, kin);
     frames["com"].push_back(Point(com.p));
     frames["com_velocity"].push_back(Point(com.v));

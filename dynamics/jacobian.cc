@@ -60,13 +60,9 @@ void AddForceDerivatives(const PointKinematics& p, const Block& block, const Vec
   dG_dv->noalias() += J.transpose() * dF_dv;
 }
 
-// d(J v)/dq = sum_k -r_k w_k j_k, in the point's block
+// d(J v)/dq in the point's block
 Jac2x6 LocalVelocityJacobian(const PointKinematics& p, const Block& block) {
-  Jac2x6 dv_dq = Jac2x6::Zero();
-  for (int k = 0; k < p.num_links; ++k) {
-    dv_dq.noalias() -= (p.links[k].body->rate * p.links[k].r) * block.Gather(p.links[k].body->j);
-  }
-  return dv_dq;
+  return block.Gather(PointVelocityJacobian(p));
 }
 
 // gravity and inertia of a point mass at fixed a: F = m (g - J a - a_bias)
