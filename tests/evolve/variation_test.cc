@@ -1,6 +1,7 @@
 #include "evolve/variation.h"
 
 #include <cmath>
+#include <ostream>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@ struct Variant {
   Preset preset;
   ScaffoldCase scaffold_case;
 };
+void PrintTo(const Variant& v, std::ostream* os) { *os << v.preset.name << " preset, " << ScaffoldCaseName(v.scaffold_case); }
 
 class MutationTest : public ::testing::TestWithParam<Variant> {
  protected:
@@ -57,7 +59,10 @@ INSTANTIATE_TEST_SUITE_P(PresetsAndScaffolds, MutationTest,
                                            Variant{PaperPreset(), ScaffoldCase::kPerformance},
                                            Variant{OriginalPreset(), ScaffoldCase::kFree},
                                            Variant{OriginalPreset(), ScaffoldCase::kTime},
-                                           Variant{OriginalPreset(), ScaffoldCase::kPerformance}));
+                                           Variant{OriginalPreset(), ScaffoldCase::kPerformance}),
+                         [](const ::testing::TestParamInfo<Variant>& variant) {
+                           return variant.param.preset.name + "_" + ScaffoldCaseName(variant.param.scaffold_case);
+                         });
 
 // one mutation's change of halfBodyX from the middle of its range: its rms
 // and how often it ends on a bound (0.05 or 0.9)
