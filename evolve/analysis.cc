@@ -243,7 +243,7 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
   char buf[256];
   auto pct = [&](const std::optional<double>& x) {
     if (!x) return std::string("—");
-    std::snprintf(buf, sizeof(buf), "%.0f %%", 100.0 * *x);
+    std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *x);
     return std::string(buf);
   };
   md << "# " << title << "\n\n";

@@ -70,17 +70,26 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
   for (const PlannedRun& run : plan) {
     const std::string run_dir = (fs::path(dir) / run.name).string();
     data.push_back(LoadRunData(run_dir, run.scaffold_case, run.replicate, run.name));
-    // the run's final best, standing, for the gallery
+    // the gallery, standing: the run's final best and, when that is a biped,
+    // the best tripod the run evaluated
     const json archive = json::parse(ReadFile(RunFiles(run_dir).archive));
     const json& best = archive.at("archive").at(0);
-    const Genome genome = GenomeFromJson(best.at("genome"), RunFiles(run_dir).archive);
-    gallery.push_back({{"label", run.name + " best"},
-                       {"run", run.name},
-                       {"id", best.at("id")},
-                       {"gait", best.at("gait")},
-                       {"fitness", best.at("fitness")},
-                       {"body", BodyJson(BuildModel(BodyOf(genome)))},
-                       {"pose", StartPoseJson(genome)}});
+    const auto add_to_gallery = [&](const std::string& label, const json& id, const std::string& gait,
+                                    double fitness, const Genome& genome) {
+      gallery.push_back({{"label", label},
+                         {"run", run.name},
+                         {"id", id},
+                         {"gait", gait},
+                         {"fitness", fitness},
+                         {"body", BodyJson(BuildModel(BodyOf(genome)))},
+                         {"pose", StartPoseJson(genome)}});
+    };
+    add_to_gallery(run.name + " best", best.at("id"), best.at("gait"), best.at("fitness"),
+                   GenomeFromJson(best.at("genome"), RunFiles(run_dir).archive));
+    const std::optional<EvaluatedSummary>& tripod = data.back().best_tripod;
+    if (best.at("gait") != "tripod" && tripod) {
+      add_to_gallery(run.name + " tripod", tripod->id, "tripod", tripod->fitness, tripod->genome);
+    }
     runs.push_back({{"case", ScaffoldCaseName(run.scaffold_case)},
                     {"replicate", run.replicate},
                     {"dir", run.name},

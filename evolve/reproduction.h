@@ -5,7 +5,8 @@
 // DIR/summary.json          statistics beside the paper's values (evolve/analysis.h)
 // DIR/summary.md            the same as tables a person reads
 // DIR/walks.json            the best biped's and best tripod's walks (control/walk_record.h)
-// DIR/gallery.json          every run's final best, standing, to scale
+// DIR/gallery.json          every run's final best and, if that is a biped, its
+//                           best tripod, standing, to scale
 #pragma once
 
 #include <cstdint>

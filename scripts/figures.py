@@ -454,7 +454,8 @@ def fig5(gallery, out_dir):
                 side.set_visible(False)
             if c >= len(people):
                 if c == 0:
-                    no_data(ax, f"no {gait}s: no data")
+                    ax.text(0.05, 0.5, f"no {gait}s: no data", ha="left", va="center",
+                            transform=ax.transAxes, color="0.4")
                 else:
                     ax.set_visible(False)
                 continue
@@ -467,7 +468,9 @@ def fig5(gallery, out_dir):
             y0 = min(0.0, e[2]) - 0.3                     # ground band holds the bar
             ax.set_ylim(y0, y0 + span_y)
             ax.set_aspect("equal")
-            ax.set_title(f"{p['label']}\nfitness {p['fitness']:.1f}")
+            crowded = ncols > 6                          # long labels on two lines
+            label = p["label"].replace(" ", "\n", 1) if crowded else p["label"]
+            ax.set_title(f"{label}\nfitness {p['fitness']:.1f}", fontsize=6 if crowded else 8)
             if r == len(rows) - 1 - (not rows[1]) and c == 0:
                 scale_bar(ax, mid - span_x / 2 + 0.1, y0 + 0.13)
         axes[r, 0].set_ylabel(f"{gait}s", color=GAIT_COLOURS[gait], fontsize=9)

@@ -35,6 +35,24 @@ for key in ("cases", "case3_over_case1_share", "case2_over_case1_final", "biped_
 assert set(s["cases"]) == {"free", "time", "performance"}, s["cases"].keys()
 assert len(s["runs"]) == 3
 PY
+# the gallery: every run's final best, and its best tripod when the final best is a biped
+"$python" - "$tmp/rep" <<'PY' || fail "gallery.json does not match the runs"
+import csv, json, sys
+rep = sys.argv[1]
+people = json.load(open(rep + "/gallery.json"))["individuals"]
+for run in ("free-1", "time-1", "performance-1"):
+    best = json.load(open(f"{rep}/{run}/archive.json"))["archive"][0]
+    mine = [p for p in people if p["run"] == run]
+    assert mine[0]["id"] == best["id"] and mine[0]["fitness"] == best["fitness"], (run, mine[0], best["id"])
+    rows = list(csv.DictReader(open(f"{rep}/{run}/evaluations.csv")))
+    tripods = [r for r in rows if r["gait"] == "tripod"]
+    if best["gait"] == "biped" and tripods:
+        top = max(float(r["fitness"]) for r in tripods)
+        assert len(mine) == 2 and mine[1]["gait"] == "tripod", (run, mine)
+        assert abs(mine[1]["fitness"] - top) <= 1e-12 * max(1.0, abs(top)), (run, mine[1]["fitness"], top)
+    else:
+        assert len(mine) == 1, (run, mine)
+PY
 # resuming a finished reproduction redoes only the statistics and figures
 WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume >"$tmp/again.txt" 2>&1 ||
   { cat "$tmp/again.txt"; fail "resuming the finished reproduction failed"; }

@@ -116,8 +116,8 @@ TEST_F(AnalysisTest, KnownAnswersOnHandMadeRuns) {
   EXPECT_EQ(j["cases"]["time"]["tripod_finals"].get<int>(), 1);
   EXPECT_DOUBLE_EQ(j["fell_share"].get<double>(), 2.0 / 11.0);
   const std::string md = SummaryToMarkdown(s, "test");
-  EXPECT_NE(md.find("| 33 % | 83 % |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| 50 % | 66 % |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 33.3 % | 83 % |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 50.0 % | 66 % |"), std::string::npos) << md;
   EXPECT_NE(md.find("+160.0 %"), std::string::npos) << md;
   EXPECT_NE(md.find("4.00 ± 1.41"), std::string::npos) << md;
 }
