@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/validators.h"
 #include "app/trajectory_csv.h"
 #include "control/evaluation.h"
 #include "control/genome.h"
@@ -72,9 +73,7 @@ void AddEvaluateCommand(CLI::App& app, Command* selected) {
   auto opt = std::make_shared<EvaluateOptions>();
   CLI::App* sub = app.add_subcommand("evaluate", "Evaluate a genome: 15 s of walking, scored by paper eq. 6");
   sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
-  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
-      ->check(CLI::IsMember({"paper", "original"}))
-      ->capture_default_str();
+  AddPresetOption(sub, &opt->preset);
   sub->add_option("--trajectory", opt->trajectory_path, "Write the trajectory as CSV, one row per 1/30 s");
   sub->add_flag("--json", opt->json, "Print one JSON object instead of a summary");
   sub->callback([opt, selected] { *selected = [opt] { return RunEvaluate(*opt); }; });

@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include "app/commands.h"
+#include "app/validators.h"
 #include "app/progress.h"
 #include "evolve/run.h"
 
@@ -32,7 +32,7 @@ int RunEvolve(const EvolveOptions& opt) {
   config.ga = opt.ga;
   config.Validate();
 
-  const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  const int threads = ThreadsOrAllCores(opt.threads);
   const StartMode mode = opt.resume ? StartMode::kResume : opt.force ? StartMode::kForce : StartMode::kNew;
   EvolutionRun run(config, opt.out, mode, threads);
   if (run.completed_generations() > 0) {
@@ -58,14 +58,12 @@ void AddEvolveCommand(CLI::App& app, Command* selected) {
   sub->add_option("--case", opt->scaffold_case, "Scaffold: free, time (eq. 7) or performance (eq. 8)")
       ->required()
       ->check(CLI::IsMember({"free", "time", "performance"}));
-  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
-      ->check(CLI::IsMember({"paper", "original"}))
-      ->capture_default_str();
+  AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations to run")
       ->check(CLI::Range(1, 10000000))
       ->capture_default_str();
   sub->add_option("--seed", opt->seed, "Random seed of the run")->capture_default_str();
-  sub->add_option("--threads", opt->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  AddThreadsOption(sub, &opt->threads);
   sub->add_option("--out", opt->out, "Run directory")->required();
   auto* resume = sub->add_flag("--resume", opt->resume, "Continue the run in --out from its last checkpoint");
   auto* force = sub->add_flag("--force", opt->force, "Replace the run in --out");

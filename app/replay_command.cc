@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/validators.h"
 #include "app/replay.h"
 #include "control/genome.h"
 #include "control/walk_record.h"
@@ -44,9 +45,7 @@ void AddReplayCommand(CLI::App& app, Command* selected) {
   auto opt = std::make_shared<ReplayOptions>();
   CLI::App* sub = app.add_subcommand("replay", "Picture a genome's walk: an HTML animation or an SVG filmstrip");
   sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
-  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
-      ->check(CLI::IsMember({"paper", "original"}))
-      ->capture_default_str();
+  AddPresetOption(sub, &opt->preset);
   sub->add_option("--out", opt->out, "walk.html (animation) or walk.svg (filmstrip)")->required();
   sub->callback([opt, selected] { *selected = [opt] { return RunReplay(*opt); }; });
 }

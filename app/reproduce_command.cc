@@ -3,9 +3,9 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
-#include <thread>
 
 #include "app/commands.h"
+#include "app/validators.h"
 #include "app/figures.h"
 #include "app/progress.h"
 #include "evolve/reproduction.h"
@@ -30,7 +30,7 @@ int RunReproduce(const ReproduceOptions& opt) {
   config.replicates = opt.replicates;
   config.seed = opt.seed;
   config.Validate();
-  const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  const int threads = ThreadsOrAllCores(opt.threads);
 
   const auto start = std::chrono::steady_clock::now();
   const int total = 3 * config.replicates;
@@ -79,14 +79,12 @@ void AddReproduceCommand(CLI::App& app, Command* selected) {
   auto opt = std::make_shared<ReproduceOptions>();
   CLI::App* sub = app.add_subcommand(
       "reproduce", "Reproduce the paper: three scaffolds x replicates, statistics and figures");
-  sub->add_option("--preset", opt->preset, "Where the paper and the authors' program differ")
-      ->check(CLI::IsMember({"paper", "original"}))
-      ->capture_default_str();
+  AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations per run")
       ->check(CLI::Range(1, 10000000))
       ->capture_default_str();
   sub->add_option("--replicates", opt->replicates, "Runs per case")->check(CLI::Range(1, 1000))->capture_default_str();
-  sub->add_option("--threads", opt->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  AddThreadsOption(sub, &opt->threads);
   sub->add_option("--seed", opt->seed, "Seed of replicate 1; replicate r uses seed + r - 1")->capture_default_str();
   sub->add_option("--out", opt->out, "Reproduction directory")->required();
   sub->add_flag("--resume", opt->resume, "Continue the runs in --out (and redo the statistics and figures)");
