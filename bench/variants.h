@@ -22,6 +22,7 @@ inline std::vector<Variant> Variants() {
     v.push_back({name, s});
   };
   add("production", [](EvaluationSettings*) {});
+  add("library_vector_ops", [](EvaluationSettings* s) { s->integrator.fixed_size_ops = false; });
   add("adams", [](EvaluationSettings* s) { s->integrator.method = MultistepMethod::kAdams; });
   add("max_order_2", [](EvaluationSettings* s) { s->integrator.max_order = 2; });
   add("max_order_3", [](EvaluationSettings* s) { s->integrator.max_order = 3; });

@@ -1,5 +1,6 @@
 #include "dynamics/integrator.h"
 
+#include "dynamics/fixed_size_ops.h"
 #include "dynamics/jacobian.h"
 #include "dynamics/planting.h"
 #include "dynamics/schur_linear_solver.h"
@@ -16,6 +17,7 @@
 namespace walkers {
 
 constexpr int kStateSize = 2 * kNumCoords;  // y = (q, v)
+static_assert(kStateSize == kFixedVectorLength);
 
 struct Integrator::Cvode {
   SUNContext context = nullptr;
@@ -71,6 +73,10 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
   cv_->y = N_VNew_Serial(kStateSize, cv_->context);
   cv_->abs_tol = N_VNew_Serial(kStateSize, cv_->context);
   if (!cv_->y || !cv_->abs_tol) throw std::runtime_error("CVODE setup failed: N_VNew_Serial");
+  // before CVodeInit and CVodeSVtolerances, which clone these two
+  if (settings.fixed_size_ops && !(UseFixedSizeVectorOps(cv_->y) && UseFixedSizeVectorOps(cv_->abs_tol))) {
+    throw std::runtime_error("CVODE setup failed: fixed-size vector operations");
+  }
   N_VConst(0.0, cv_->y);
 
   const int lmm = settings.method == MultistepMethod::kBdf ? CV_BDF : CV_ADAMS;
@@ -93,6 +99,10 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
 
   // Newton iteration (CVODE's default) with a direct solver on a dense matrix
   cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);
+  // before CVodeSetLinearSolver, which clones it for the saved Jacobian
+  if (settings.fixed_size_ops && !UseFixedSizeMatrixOps(cv_->jacobian)) {
+    throw std::runtime_error("CVODE setup failed: fixed-size matrix operations");
+  }
   cv_->linear_solver = settings.linear_solver == LinearSolver::kSchurComplement
                            ? MakeSchurLinearSolver(cv_->y, cv_->jacobian, cv_->context)
                            : SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context);

@@ -44,6 +44,10 @@ struct IntegratorSettings {
   // Switching a weld on projects the state onto it (ProjectOntoWeld): the foot
   // lands as a plastic impact instead of being yanked by the stiff weld.
   bool project_on_plant = true;
+  // CVODE's vector and matrix bookkeeping through fixed-size loops
+  // (dynamics/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones.
+  // Bit-identical results either way; only the speed differs.
+  bool fixed_size_ops = true;
   long step_budget = 1000000;  // steps allowed since the last Reset
 };
 

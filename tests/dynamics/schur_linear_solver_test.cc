@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
+#include "tests/dynamics/sundials_handles.h"
+
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -28,30 +30,6 @@ constexpr int kHalf = 9;
 using Mat18 = Eigen::Matrix<double, kN, kN>;
 using Vec18 = Eigen::Matrix<double, kN, 1>;
 using Mat9 = Eigen::Matrix<double, kHalf, kHalf>;
-
-// owning handles for the SUNDIALS objects
-struct ContextFree {
-  void operator()(SUNContext c) const { SUNContext_Free(&c); }
-};
-struct MatrixFree {
-  void operator()(SUNMatrix m) const { SUNMatDestroy(m); }
-};
-struct VectorFree {
-  void operator()(N_Vector v) const { N_VDestroy(v); }
-};
-struct SolverFree {
-  void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
-};
-using ContextPtr = std::unique_ptr<std::remove_pointer_t<SUNContext>, ContextFree>;
-using MatrixPtr = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixFree>;
-using VectorPtr = std::unique_ptr<std::remove_pointer_t<N_Vector>, VectorFree>;
-using SolverPtr = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverFree>;
-
-ContextPtr NewContext() {
-  SUNContext c = nullptr;
-  if (SUNContext_Create(nullptr, &c) != 0) return nullptr;
-  return ContextPtr(c);
-}
 
 void Store(const Mat18& m, SUNMatrix a) {
   for (int j = 0; j < kN; ++j)
