@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "dynamics/coords.h"
+#include "dynamics/lu_solve9.h"
 
 namespace walkers {
 namespace {
@@ -164,8 +165,8 @@ int Solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vector b, sunrealtyp
   // w = D11^{-1} b1; second block row: S x2 = b2 - M21 w
   const Vec9 w = c->inverse_d11.cwiseProduct(b1);
   Vec9 rhs = b2;
-  rhs.noalias() -= c->m21 * w;
-  const Vec9 x2 = c->schur_lu.solve(rhs);
+  SubtractProduct(c->m21, w, &rhs);
+  const Vec9 x2 = SolveLu9(c->schur_lu, rhs);
 
   // back substitution into the first block row: x1 = D11^{-1} (b1 - D12 x2)
   // = w - (d12 / d11) x2, which is b1 + gamma*x2 for D11 = I, D12 = -gamma*I
