@@ -46,6 +46,17 @@ TEST(EvaluationTest, IsBitIdenticalTwiceAndOnAnotherThread) {
   ExpectIdentical(first, threaded);
 }
 
+// dynamics/fixed_size_ops promises SUNDIALS' arithmetic in SUNDIALS' order: a
+// whole walk, ~10 k steps through every CVODE code path, must not move a bit
+TEST(EvaluationTest, FixedSizeOperationsChangeNoBit) {
+  EvaluationSettings library;
+  library.integrator.fixed_size_ops = false;
+  for (const Preset& preset : {OriginalPreset(), PaperPreset()}) {
+    SCOPED_TRACE(preset.name);
+    ExpectIdentical(Evaluate(DefaultGenome(), preset), Evaluate(DefaultGenome(), preset, library));
+  }
+}
+
 TEST(EvaluationTest, AWalkerWithAWeakVerticalSpringFallsAndScoresMinusOne) {
   Genome g = DefaultGenome();
   g[kKy] = 3000.0;        // the floor: it cannot hold the trunk up...
