@@ -162,11 +162,6 @@ void Compare(double c, N_Vector x, N_Vector z) {
 
 inline double* Data(SUNMatrix A) { return SM_DATA_D(A); }
 
-bool IsDense(SUNMatrix A, int rows, int columns) {
-  return A && A->content && SUNMatGetID(A) == SUNMATRIX_DENSE && SM_ROWS_D(A) == rows &&
-         SM_COLUMNS_D(A) == columns && SM_LDATA_D(A) == rows * columns && SM_DATA_D(A);
-}
-
 int MatrixZero(SUNMatrix A) {
   double* a = Data(A);
   for (int k = 0; k < kMatrixSize; ++k) a[k] = 0.0;
@@ -175,7 +170,7 @@ int MatrixZero(SUNMatrix A) {
 
 // B = A
 int MatrixCopy(SUNMatrix A, SUNMatrix B) {
-  if (!IsDense(B, kN, kN)) return SUNMAT_ILL_INPUT;
+  if (!IsDense18(B)) return SUNMAT_ILL_INPUT;
   const double* a = Data(A);
   double* b = Data(B);
   for (int k = 0; k < kMatrixSize; ++k) b[k] = a[k];
@@ -198,10 +193,18 @@ SUNMatrix MatrixClone(SUNMatrix A) {
 
 }  // namespace
 
+bool IsSerial18(N_Vector v) {
+  return v && v->ops && v->ops->nvgetvectorid && v->content && N_VGetVectorID(v) == SUNDIALS_NVEC_SERIAL &&
+         NV_LENGTH_S(v) == kN;
+}
+
+bool IsDense18(SUNMatrix A) {
+  return A && A->ops && A->ops->getid && A->content && SUNMatGetID(A) == SUNMATRIX_DENSE && SM_ROWS_D(A) == kN &&
+         SM_COLUMNS_D(A) == kN && SM_LDATA_D(A) == kMatrixSize && SM_DATA_D(A);
+}
+
 bool UseFixedSizeVectorOps(N_Vector v) {
-  if (!v || !v->ops || N_VGetVectorID(v) != SUNDIALS_NVEC_SERIAL || NV_LENGTH_S(v) != kN || !NV_DATA_S(v)) {
-    return false;
-  }
+  if (!IsSerial18(v)) return false;
   N_Vector_Ops ops = v->ops;
   ops->nvlinearsum = LinearSum;
   ops->nvconst = Const;
@@ -224,7 +227,7 @@ bool UseFixedSizeVectorOps(N_Vector v) {
 }
 
 bool UseFixedSizeMatrixOps(SUNMatrix A) {
-  if (!IsDense(A, kN, kN) || !A->ops) return false;
+  if (!IsDense18(A)) return false;
   A->ops->zero = MatrixZero;
   A->ops->copy = MatrixCopy;
   A->ops->scaleaddi = MatrixScaleAddI;

@@ -28,6 +28,12 @@ namespace walkers {
 
 constexpr int kFixedVectorLength = 18;  // the state y = (q, v)
 
+// A serial N_Vector of length 18.
+bool IsSerial18(N_Vector v);
+
+// A dense 18x18 SUNMatrix with its 324 entries in one column-major array.
+bool IsDense18(SUNMatrix A);
+
 // Replaces the operations of a serial N_Vector of length 18. Returns false,
 // changing nothing, for any other vector.
 bool UseFixedSizeVectorOps(N_Vector v);

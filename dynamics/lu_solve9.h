@@ -21,13 +21,17 @@
 
 namespace walkers {
 
+// the term Eigen's column-major matrix-vector kernel adds to res(row) for
+// alpha = -1: minus the sum of A(row, j) b(j), j = begin..end-1 ascending
+inline double MinusRowProduct(const Mat9& A, int row, int begin, int end, const Vec9& b) {
+  double c = 0.0;
+  for (int j = begin; j < end; ++j) c += A(row, j) * b(j);
+  return -1.0 * c;
+}
+
 // x -= A b
 inline void SubtractProduct(const Mat9& A, const Vec9& b, Vec9* x) {
-  for (int i = 0; i < kNumCoords; ++i) {
-    double c = 0.0;
-    for (int j = 0; j < kNumCoords; ++j) c += A(i, j) * b(j);
-    (*x)(i) += -1.0 * c;
-  }
+  for (int i = 0; i < kNumCoords; ++i) (*x)(i) += MinusRowProduct(A, i, 0, kNumCoords, b);
 }
 
 // P A = L U as Eigen's PartialPivLU stores it: returns A^{-1} b
@@ -42,11 +46,7 @@ inline Vec9 SolveLu9(const Eigen::PartialPivLU<Mat9>& lu, const Vec9& b) {
     if (x(i) == 0.0) continue;
     for (int r = i + 1; r < kPanel; ++r) x(r) -= x(i) * m(r, i);
   }
-  {
-    double c = 0.0;
-    for (int j = 0; j < kPanel; ++j) c += m(kPanel, j) * x(j);
-    x(kPanel) += -1.0 * c;
-  }
+  x(kPanel) += MinusRowProduct(m, kPanel, 0, kPanel, x);
 
   // U x = y: the panel of rows 8..1 from the bottom, then row 0
   for (int i = kPanel; i >= 1; --i) {
@@ -54,11 +54,7 @@ inline Vec9 SolveLu9(const Eigen::PartialPivLU<Mat9>& lu, const Vec9& b) {
     x(i) /= m(i, i);
     for (int r = 1; r < i; ++r) x(r) -= x(i) * m(r, i);
   }
-  {
-    double c = 0.0;
-    for (int j = 1; j <= kPanel; ++j) c += m(0, j) * x(j);
-    x(0) += -1.0 * c;
-  }
+  x(0) += MinusRowProduct(m, 0, 1, kPanel + 1, x);
   if (x(0) != 0.0) x(0) /= m(0, 0);
   return x;
 }

@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "dynamics/coords.h"
+#include "dynamics/fixed_size_ops.h"
 #include "dynamics/lu_solve9.h"
 
 namespace walkers {
@@ -24,6 +25,7 @@ static_assert(std::is_same<sunrealtype, double>::value, "the solver maps SUNDIAL
 
 constexpr int kBlock = kNumCoords;      // q and v each
 constexpr int kSize = 2 * kNumCoords;  // y = (q, v)
+static_assert(kSize == kFixedVectorLength);
 
 using Mat9 = Eigen::Matrix<double, kBlock, kBlock>;
 using Vec9 = Eigen::Matrix<double, kBlock, 1>;
@@ -49,11 +51,6 @@ struct Content {
 };
 
 Content* ContentOf(SUNLinearSolver S) { return S ? static_cast<Content*>(S->content) : nullptr; }
-
-bool IsDense18(SUNMatrix A) {
-  return A && A->ops && A->ops->getid && SUNMatGetID(A) == SUNMATRIX_DENSE && SUNDenseMatrix_Rows(A) == kSize &&
-         SUNDenseMatrix_Columns(A) == kSize && SUNDenseMatrix_Data(A) != nullptr;
-}
 
 // the vector's data when it is usable as an 18-long array, else nullptr
 double* Data18(N_Vector v) {
@@ -203,11 +200,7 @@ int Free(SUNLinearSolver S) {
 }  // namespace
 
 SUNLinearSolver MakeSchurLinearSolver(N_Vector y_template, SUNMatrix A, SUNContext context) {
-  if (!context || !IsDense18(A)) return nullptr;
-  if (!y_template || !y_template->ops || !y_template->ops->nvgetvectorid ||
-      N_VGetVectorID(y_template) != SUNDIALS_NVEC_SERIAL || N_VGetLength_Serial(y_template) != kSize) {
-    return nullptr;
-  }
+  if (!context || !IsDense18(A) || !IsSerial18(y_template)) return nullptr;
 
   SUNLinearSolver S = SUNLinSolNewEmpty(context);
   if (!S) return nullptr;
