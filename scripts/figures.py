@@ -269,10 +269,10 @@ def save(fig, out_dir, name):
     print(f"wrote {os.path.join(out_dir, name)}.png/.svg")
 
 
-def no_data(ax, text="no data"):
-    """Blank an axes with a centred 'no data' note."""
-    ax.text(0.5, 0.5, text, ha="center", va="center", transform=ax.transAxes,
-            color="0.4")
+def no_data(ax, text="no data", left=False):
+    """Blank an axes with a 'no data' note, centred or from the left edge."""
+    ax.text(0.05 if left else 0.5, 0.5, text, ha="left" if left else "center",
+            va="center", transform=ax.transAxes, color="0.4")
     ax.set_xticks([])
     ax.set_yticks([])
 
@@ -454,8 +454,8 @@ def fig5(gallery, out_dir):
                 side.set_visible(False)
             if c >= len(people):
                 if c == 0:
-                    ax.text(0.05, 0.5, f"no {gait}s: no data", ha="left", va="center",
-                            transform=ax.transAxes, color="0.4")
+                    # a narrow first panel of a wide row: start at its left edge
+                    no_data(ax, f"no {gait}s: no data", left=True)
                 else:
                     ax.set_visible(False)
                 continue
