@@ -96,6 +96,8 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
   Check(CVodeSetMaxOrd(cv_->mem, settings.max_order), "CVodeSetMaxOrd");
   Check(CVodeSetStabLimDet(cv_->mem, settings.stability_limit_detection ? SUNTRUE : SUNFALSE),
         "CVodeSetStabLimDet");
+  Check(CVodeSetDeltaGammaMaxLSetup(cv_->mem, settings.newton_matrix_gamma_change), "CVodeSetDeltaGammaMaxLSetup");
+  Check(CVodeSetLSetupFrequency(cv_->mem, settings.newton_matrix_max_age), "CVodeSetLSetupFrequency");
 
   // Newton iteration (CVODE's default) with a direct solver on a dense matrix
   cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);

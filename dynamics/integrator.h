@@ -35,6 +35,10 @@ struct IntegratorSettings {
   JacobianSource jacobian = JacobianSource::kAnalytic;
   LinearSolver linear_solver = LinearSolver::kSchurComplement;
   bool stability_limit_detection = false;
+  // When CVODE refreshes the Newton matrix I - gamma J: after this relative
+  // change of gamma, and at least every this many steps (CVODE's defaults).
+  double newton_matrix_gamma_change = 0.3;
+  long newton_matrix_max_age = 20;  // [steps]
   // Restart CVODE (back to order 1) whenever the held joint torques change.
   // AdvanceTo never steps past a point where they may change, and CVODE's
   // error test usually copes with the jump more cheaply than a restart; when

@@ -12,6 +12,8 @@
 //   (8) rows: column updates inside a panel (skipped when the solved entry is
 //   exactly zero), the matrix-vector kernel for the rows past it.
 // tests/dynamics/lu_solve9_test.cc checks both against Eigen bit for bit.
+// The loops are fully unrolled (the pragmas), which GCC does not do by itself
+// for loops this long.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,12 +27,14 @@ namespace walkers {
 // alpha = -1: minus the sum of A(row, j) b(j), j = begin..end-1 ascending
 inline double MinusRowProduct(const Mat9& A, int row, int begin, int end, const Vec9& b) {
   double c = 0.0;
+  #pragma GCC unroll 9
   for (int j = begin; j < end; ++j) c += A(row, j) * b(j);
   return -1.0 * c;
 }
 
 // x -= A b
 inline void SubtractProduct(const Mat9& A, const Vec9& b, Vec9* x) {
+  #pragma GCC unroll 9
   for (int i = 0; i < kNumCoords; ++i) (*x)(i) += MinusRowProduct(A, i, 0, kNumCoords, b);
 }
 
@@ -42,16 +46,20 @@ inline Vec9 SolveLu9(const Eigen::PartialPivLU<Mat9>& lu, const Vec9& b) {
   Vec9 x = lu.permutationP() * b;
 
   // L y = P b, L unit lower: the panel of rows 0..7, then row 8
+  #pragma GCC unroll 9
   for (int i = 0; i < kPanel; ++i) {
     if (x(i) == 0.0) continue;
+    #pragma GCC unroll 9
     for (int r = i + 1; r < kPanel; ++r) x(r) -= x(i) * m(r, i);
   }
   x(kPanel) += MinusRowProduct(m, kPanel, 0, kPanel, x);
 
   // U x = y: the panel of rows 8..1 from the bottom, then row 0
+  #pragma GCC unroll 9
   for (int i = kPanel; i >= 1; --i) {
     if (x(i) == 0.0) continue;
     x(i) /= m(i, i);
+    #pragma GCC unroll 9
     for (int r = 1; r < i; ++r) x(r) -= x(i) * m(r, i);
   }
   x(0) += MinusRowProduct(m, 0, 1, kPanel + 1, x);
