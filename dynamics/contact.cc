@@ -14,8 +14,8 @@ std::array<Vec2, 4> BoxCorners(double hx, double hy) {
 // force f applied at world offset r from a base point on the body of angle `body`
 void ApplyForce(const PointKinematics& base, const AngleKinematics& body, const Vec2& r, const Vec2& f,
                 Vec9* Q) {
-  *Q += base.J.transpose() * f;
-  *Q += body.j.transpose() * (r.x() * f.y() - r.y() * f.x());
+  AddTransposeProduct(base, f, Q);
+  AddTransposeProduct(body, r.x() * f.y() - r.y() * f.x(), Q);
 }
 
 // a point at offset r from the base: a box corner, or a knee circle's lowest
@@ -84,8 +84,8 @@ void AddWeldForces(const Model& model, const Kinematics& kin, const Welds& welds
     const Vec2 f = -model.weld.stiffness * (l.ankle.p - welds[leg].anchor) - model.weld_damping * l.ankle.v;
     const double torque = -model.weld.angular_stiffness * (l.foot.angle - welds[leg].angle) -
                           model.weld_angular_damping * l.foot.rate;
-    *Q += l.ankle.J.transpose() * f;
-    *Q += l.foot.j.transpose() * torque;
+    AddTransposeProduct(l.ankle, f, Q);
+    AddTransposeProduct(l.foot, torque, Q);
   }
 }
 

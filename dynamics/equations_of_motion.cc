@@ -5,15 +5,13 @@
 namespace walkers {
 namespace {
 
-// Columns of q a point or an angle depends on: the trunk's (x, y, pitch) and
-// one leg's joints. Products over these alone keep M's assembly cheap.
+// Columns of q a point or an angle depends on, at most the trunk's (x, y,
+// pitch) and one leg's joints (ColumnsOf). Products over these alone keep M's
+// assembly cheap.
 template <size_t N>
 using Support = std::array<int, N>;
 constexpr Support<2> kTrunkSupport = {kX, kY};
 constexpr Support<3> kHipSupport = {kX, kY, kPitch};
-constexpr Support<6> LegSupport(int leg) {
-  return {kX, kY, kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)};
-}
 constexpr Support<4> LegAngleSupport(int leg) {
   return {kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)};
 }
@@ -43,7 +41,7 @@ void AddInertia(double inertia, const AngleKinematics& angle, const Support<N>& 
 // gravity and velocity-product forces of a point mass: J^T m (g - a_bias)
 void AddPointMassForces(double m, double gravity, const PointKinematics& p, Vec9* Q) {
   const Vec2 f = m * (Vec2(0.0, -gravity) - p.a_bias);
-  Q->noalias() += p.J.transpose() * f;
+  AddTransposeProduct(p, f, Q);
 }
 
 }  // namespace
@@ -55,8 +53,8 @@ void MassMatrix(const Model& model, const Kinematics& kin, Mat9* M) {
   (*M)(kPitch, kPitch) += model.trunk_inertia;
   for (int leg = 0; leg < kNumLegs; ++leg) {
     const LegKinematics& l = kin.legs[leg];
-    AddPointMass(model.knee_mass, l.knee, LegSupport(leg), M);
-    AddPointMass(model.ankle_mass, l.ankle, LegSupport(leg), M);
+    AddPointMass(model.knee_mass, l.knee, ColumnsOf(leg), M);
+    AddPointMass(model.ankle_mass, l.ankle, ColumnsOf(leg), M);
     AddInertia(model.femur_inertia, l.femur, LegAngleSupport(leg), M);
     AddInertia(model.tibia_inertia, l.tibia, LegAngleSupport(leg), M);
     AddInertia(model.foot_inertia, l.foot, LegAngleSupport(leg), M);

@@ -5,9 +5,10 @@
 namespace walkers {
 namespace {
 
-AngleKinematics MakeAngle(const Row9& j, const Vec9& q, const Vec9& v) {
+AngleKinematics MakeAngle(const Row9& j, int leg, const Vec9& q, const Vec9& v) {
   AngleKinematics a;
   a.j = j;
+  a.leg = leg;
   a.angle = j.dot(q);
   a.rate = j.dot(v);
   a.c = std::cos(a.angle);
@@ -24,7 +25,11 @@ PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& 
   out.p += r;
   out.v += perp * body.rate;
   out.a_bias -= r * (body.rate * body.rate);
-  out.J.noalias() += perp * body.j;
+  out.leg = body.leg;  // the base's columns are the trunk's or the same leg's
+  for (int i : ColumnsOf(body.leg)) {
+    out.J(0, i) += perp.x() * body.j(i);
+    out.J(1, i) += perp.y() * body.j(i);
+  }
   out.links[out.num_links++] = {r, &body};
   return out;
 }
@@ -42,7 +47,7 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
 
   Row9 j = Row9::Zero();
   j(kPitch) = 1.0;
-  kin->pitch = MakeAngle(j, q, v);
+  kin->pitch = MakeAngle(j, kLeft, q, v);
 
   // hips at (0, -half_body_y) in the trunk frame
   kin->trunk.num_links = 0;
@@ -57,9 +62,9 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
     j_tibia(JointIndex(leg, kKnee)) = -1.0;
     Row9 j_foot = j_tibia;
     j_foot(JointIndex(leg, kAnkle)) = -1.0;
-    l.femur = MakeAngle(j_femur, q, v);
-    l.tibia = MakeAngle(j_tibia, q, v);
-    l.foot = MakeAngle(j_foot, q, v);
+    l.femur = MakeAngle(j_femur, leg, q, v);
+    l.tibia = MakeAngle(j_tibia, leg, q, v);
+    l.foot = MakeAngle(j_foot, leg, q, v);
 
     l.knee = OffsetPoint(kin->hip, l.femur, b.femur_length * SegmentDirection(l.femur));
     l.ankle = OffsetPoint(l.knee, l.tibia, b.tibia_length * SegmentDirection(l.tibia));

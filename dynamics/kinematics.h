@@ -10,12 +10,20 @@
 
 namespace walkers {
 
+// The columns of q a point or an angle of the tree can depend on: the trunk's
+// three and one leg's three. The rest of its Jacobian is zero.
+using TreeColumns = std::array<int, 6>;
+constexpr TreeColumns ColumnsOf(int leg) {
+  return {kX, kY, kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)};
+}
+
 // An absolute body angle. Every angle is linear in q: angle = j q.
 struct AngleKinematics {
   double angle = 0;
   double rate = 0;
   double c = 1, s = 0;  // cos and sin of the angle
   Row9 j = Row9::Zero();
+  int leg = kLeft;  // j is zero outside ColumnsOf(leg) (a trunk angle: any leg)
 };
 
 // A point of the tree: p, v = J q', and a_bias = J' q' so that a = J q'' + a_bias.
@@ -33,6 +41,7 @@ struct PointKinematics {
   Vec2 v = Vec2::Zero();
   Vec2 a_bias = Vec2::Zero();
   Jac2x9 J = Jac2x9::Zero();
+  int leg = kLeft;  // J is zero outside ColumnsOf(leg) (a trunk point: any leg)
   int num_links = 0;
   std::array<Link, kMaxLinks> links{};
 };
@@ -67,6 +76,15 @@ inline Vec2 SegmentDirection(const AngleKinematics& body) { return Vec2(body.s, 
 // A body-fixed vector r_local rotated by the body's angle into the world frame.
 inline Vec2 Rotate(const AngleKinematics& body, const Vec2& r_local) {
   return Vec2(body.c * r_local.x() - body.s * r_local.y(), body.s * r_local.x() + body.c * r_local.y());
+}
+
+// Q += J^T f and Q += j^T torque, over the columns that can be nonzero: the
+// same sums as the dense products, whose other terms add zeros.
+inline void AddTransposeProduct(const PointKinematics& p, const Vec2& f, Vec9* Q) {
+  for (int i : ColumnsOf(p.leg)) (*Q)(i) += p.J(0, i) * f.x() + p.J(1, i) * f.y();
+}
+inline void AddTransposeProduct(const AngleKinematics& a, double torque, Vec9* Q) {
+  for (int i : ColumnsOf(a.leg)) (*Q)(i) += a.j(i) * torque;
 }
 
 // perp(r) = (-r_y, r_x) = dr/dangle for a vector turning with an angle.
