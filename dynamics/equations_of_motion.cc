@@ -19,9 +19,11 @@ constexpr Support<4> LegAngleSupport(int leg) {
 // upper triangle of m J^T J over the point's support
 template <size_t N>
 void AddPointMass(double m, const PointKinematics& p, const Support<N>& cols, Mat9* M) {
+  #pragma GCC unroll 6
   for (size_t a = 0; a < N; ++a) {
     const int i = cols[a];
     const double mx = m * p.J(0, i), my = m * p.J(1, i);
+    #pragma GCC unroll 6
     for (size_t b = a; b < N; ++b) {
       const int k = cols[b];
       (*M)(i, k) += mx * p.J(0, k) + my * p.J(1, k);
@@ -32,8 +34,10 @@ void AddPointMass(double m, const PointKinematics& p, const Support<N>& cols, Ma
 // upper triangle of I j^T j over the angle's support
 template <size_t N>
 void AddInertia(double inertia, const AngleKinematics& angle, const Support<N>& cols, Mat9* M) {
+  #pragma GCC unroll 6
   for (size_t a = 0; a < N; ++a) {
     const double ij = inertia * angle.j(cols[a]);
+    #pragma GCC unroll 6
     for (size_t b = a; b < N; ++b) (*M)(cols[a], cols[b]) += ij * angle.j(cols[b]);
   }
 }

@@ -8,7 +8,6 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <cmath>
 #include <new>
@@ -42,7 +41,7 @@ constexpr double kOffDiagonalTolerance = 1e-12;  // relative to 1 and to gamma
 // Everything the solver keeps between setup and solve: fixed-size Eigen types
 // only, so setup and solve never allocate.
 struct Content {
-  Eigen::PartialPivLU<Mat9> schur_lu;  // P*S = L*U, S = M22 - M21*M11^{-1}*M12
+  Lu9 schur_lu;                        // P*S = L*U, S = M22 - M21*M11^{-1}*M12
   Mat9 m21;                            // lower-left block of M
   Vec9 inverse_d11;                    // 1 / diag(M11)
   Vec9 ratio;                          // diag(M12) / diag(M11)
@@ -123,19 +122,15 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
   // with a smaller step: recoverable
   if (!schur.allFinite()) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_REC);
 
-  // factor S with row pivoting; Eigen does not stop at a zero pivot (it leaves
-  // it in U and carries on), so look for one: like SUNLinSol_Dense, report
-  // the 1-based column of the first zero pivot, here a column of the full
-  // matrix (x2 = v part, 10..18), with the recoverable SUNLS_LUFACT_FAIL
-  c->schur_lu.compute(schur);
-  const Mat9& lu = c->schur_lu.matrixLU();
-  for (int k = 0; k < kBlock; ++k) {
-    if (lu(k, k) == 0.0) {
-      c->last_flag = kBlock + k + 1;
-      return SUNLS_LUFACT_FAIL;
-    }
+  // factor S with row pivoting; like SUNLinSol_Dense, report the 1-based
+  // column of the first zero pivot, here a column of the full matrix
+  // (x2 = v part, 10..18), with the recoverable SUNLS_LUFACT_FAIL
+  FactorLu9(schur, &c->schur_lu);
+  if (c->schur_lu.first_zero_pivot >= 0) {
+    c->last_flag = kBlock + c->schur_lu.first_zero_pivot + 1;
+    return SUNLS_LUFACT_FAIL;
   }
-  if (!lu.allFinite()) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_REC);
+  if (!c->schur_lu.lu.allFinite()) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_REC);
 
   c->factored = true;
   c->last_flag = SUNLS_SUCCESS;
