@@ -5,32 +5,35 @@
 namespace walkers {
 namespace {
 
-AngleKinematics MakeAngle(const Row9& j, int leg, const Vec9& q, const Vec9& v) {
-  AngleKinematics a;
-  a.j = j;
-  a.leg = leg;
-  a.angle = j.dot(q);
-  a.rate = j.dot(v);
-  a.c = std::cos(a.angle);
-  a.s = std::sin(a.angle);
-  return a;
+void SetAngle(const Row9& j, int leg, const Vec9& q, const Vec9& v, AngleKinematics* a) {
+  a->j = j;
+  a->leg = leg;
+  a->angle = j.dot(q);
+  a->rate = j.dot(v);
+  a->c = std::cos(a->angle);
+  a->s = std::sin(a->angle);
 }
 
 }  // namespace
 
-PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r) {
+void OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r, PointKinematics* out) {
   // p = p_base + r(angle): dr/dangle = perp(r), d2r/dangle2 = -r
   const Vec2 perp = Perp(r);
-  PointKinematics out = base;
-  out.p += r;
-  out.v += perp * body.rate;
-  out.a_bias -= r * (body.rate * body.rate);
-  out.leg = body.leg;  // the base's columns are the trunk's or the same leg's
+  *out = base;
+  out->p += r;
+  out->v += perp * body.rate;
+  out->a_bias -= r * (body.rate * body.rate);
+  out->leg = body.leg;  // the base's columns are the trunk's or the same leg's
   for (int i : ColumnsOf(body.leg)) {
-    out.J(0, i) += perp.x() * body.j(i);
-    out.J(1, i) += perp.y() * body.j(i);
+    out->J(0, i) += perp.x() * body.j(i);
+    out->J(1, i) += perp.y() * body.j(i);
   }
-  out.links[out.num_links++] = {r, &body};
+  out->links[out->num_links++] = {r, &body};
+}
+
+PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r) {
+  PointKinematics out;
+  OffsetPoint(base, body, r, &out);
   return out;
 }
 
@@ -47,11 +50,11 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
 
   Row9 j = Row9::Zero();
   j(kPitch) = 1.0;
-  kin->pitch = MakeAngle(j, kLeft, q, v);
+  SetAngle(j, kLeft, q, v, &kin->pitch);
 
   // hips at (0, -half_body_y) in the trunk frame
   kin->trunk.num_links = 0;
-  kin->hip = OffsetPoint(kin->trunk, kin->pitch, Rotate(kin->pitch, Vec2(0.0, -b.half_body_y)));
+  OffsetPoint(kin->trunk, kin->pitch, Rotate(kin->pitch, Vec2(0.0, -b.half_body_y)), &kin->hip);
 
   for (int leg = 0; leg < kNumLegs; ++leg) {
     LegKinematics& l = kin->legs[leg];
@@ -62,12 +65,12 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
     j_tibia(JointIndex(leg, kKnee)) = -1.0;
     Row9 j_foot = j_tibia;
     j_foot(JointIndex(leg, kAnkle)) = -1.0;
-    l.femur = MakeAngle(j_femur, leg, q, v);
-    l.tibia = MakeAngle(j_tibia, leg, q, v);
-    l.foot = MakeAngle(j_foot, leg, q, v);
+    SetAngle(j_femur, leg, q, v, &l.femur);
+    SetAngle(j_tibia, leg, q, v, &l.tibia);
+    SetAngle(j_foot, leg, q, v, &l.foot);
 
-    l.knee = OffsetPoint(kin->hip, l.femur, b.femur_length * SegmentDirection(l.femur));
-    l.ankle = OffsetPoint(l.knee, l.tibia, b.tibia_length * SegmentDirection(l.tibia));
+    OffsetPoint(kin->hip, l.femur, b.femur_length * SegmentDirection(l.femur), &l.knee);
+    OffsetPoint(l.knee, l.tibia, b.tibia_length * SegmentDirection(l.tibia), &l.ankle);
   }
 }
 

@@ -67,6 +67,7 @@ void ComputeKinematics(const Model& model, const Vec9& q, const Vec9& v, Kinemat
 // A point rigidly attached at `r` (world frame) from `base` to the body of angle `body`:
 // its position, velocity, Jacobian and bias acceleration.
 PointKinematics OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r);
+void OffsetPoint(const PointKinematics& base, const AngleKinematics& body, const Vec2& r, PointKinematics* out);
 
 // Unit vector of a segment of absolute angle a, pointing from its top end to
 // its bottom end: (sin a, -cos a).
