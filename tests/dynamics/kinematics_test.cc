@@ -1,5 +1,6 @@
 #include "dynamics/kinematics.h"
 
+#include <algorithm>
 #include <functional>
 #include <random>
 
@@ -124,6 +125,58 @@ TEST_F(KinematicsTest, ContactPointVelocitiesMatchTimeDerivatives) {
     }
     EXPECT_TRUE(MatricesNear(numeric, samples[i].v, 1e-6)) << "contact point " << i;
     EXPECT_NEAR(samples[i].depth, -samples[i].p.y(), 1e-15);
+  }
+}
+
+// The Jacobian-transpose products and the kinematics' own Jacobian updates
+// visit only ColumnsOf(leg): every point, angle and contact point must be
+// exactly zero outside it, and the products must equal the dense ones.
+TEST_F(KinematicsTest, JacobiansVanishOutsideTheirColumnsAndSparseProductsMatchDenseOnes) {
+  auto outside = [](int leg) {
+    std::vector<int> cols;
+    const TreeColumns inside = ColumnsOf(leg);
+    for (int c = 0; c < kNumCoords; ++c) {
+      if (std::find(inside.begin(), inside.end(), c) == inside.end()) cols.push_back(c);
+    }
+    return cols;
+  };
+  for (int trial = 0; trial < 10; ++trial) {
+    const Vec9 q = RandomQ();
+    const Kinematics kin = At(q, testing::RandomVector<kNumCoords>(rng_, -2.0, 2.0));
+    const Vec2 f = testing::RandomVector<2>(rng_, -100.0, 100.0);
+    const double torque = std::uniform_real_distribution<double>(-50.0, 50.0)(rng_);
+
+    std::vector<std::pair<std::string, PointKinematics>> points;
+    for (const auto& [name, point] : AllPoints()) points.push_back({name, point(kin)});
+    const auto carriers = ContactCarriers(model_, kin);
+    for (int i = 0; i < kNumContactPoints; ++i) {
+      points.push_back({"contact point " + std::to_string(i),
+                        OffsetPoint(*carriers[i].base, *carriers[i].body, carriers[i].r)});
+    }
+    for (const auto& [name, p] : points) {
+      for (int c : outside(p.leg)) EXPECT_EQ(p.J.col(c), Vec2::Zero()) << name << " column " << c;
+      const Vec9 start = testing::RandomVector<kNumCoords>(rng_, -10.0, 10.0);
+      Vec9 sparse = start, dense = start;
+      AddTransposeProduct(p, f, &sparse);
+      dense += p.J.transpose() * f;
+      EXPECT_EQ(sparse, dense) << name;
+    }
+
+    std::vector<std::pair<std::string, const AngleKinematics*>> angles = {{"pitch", &kin.pitch}};
+    for (int leg = 0; leg < kNumLegs; ++leg) {
+      for (const AngleKinematics* a : {&kin.legs[leg].femur, &kin.legs[leg].tibia, &kin.legs[leg].foot}) {
+        angles.push_back({"leg " + std::to_string(leg) + " angle", a});
+        EXPECT_EQ(a->leg, leg);
+      }
+    }
+    for (const auto& [name, a] : angles) {
+      for (int c : outside(a->leg)) EXPECT_EQ(a->j(c), 0.0) << name << " column " << c;
+      const Vec9 start = testing::RandomVector<kNumCoords>(rng_, -10.0, 10.0);
+      Vec9 sparse = start, dense = start;
+      AddTransposeProduct(*a, torque, &sparse);
+      dense += a->j.transpose() * torque;
+      EXPECT_EQ(sparse, dense) << name;
+    }
   }
 }
 
