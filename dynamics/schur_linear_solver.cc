@@ -51,11 +51,9 @@ struct Content {
 
 Content* ContentOf(SUNLinearSolver S) { return S ? static_cast<Content*>(S->content) : nullptr; }
 
-// the vector's data when it is usable as an 18-long array, else nullptr
-double* Data18(N_Vector v) {
-  if (!v || !v->ops || !v->ops->nvgetarraypointer || !v->ops->nvgetlength || N_VGetLength(v) != kSize) return nullptr;
-  return N_VGetArrayPointer(v);
-}
+// the data of a serial vector of length 18 (the kind the solver was made
+// for, MakeSchurLinearSolver), else nullptr
+double* Data18(N_Vector v) { return IsSerial18(v) ? NV_DATA_S(v) : nullptr; }
 
 SUNLinearSolver_Type GetType(SUNLinearSolver /*S*/) { return SUNLINEARSOLVER_DIRECT; }
 
