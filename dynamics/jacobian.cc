@@ -6,18 +6,17 @@
 namespace walkers {
 namespace {
 
-// Every point and angle of the tree depends on at most six coordinates: the
-// trunk's (x, y, pitch) and one leg's (hip, knee, ankle). Each force's
-// derivative terms are assembled in that 6x6 block and scattered into the 9x9
-// matrices: the dense products would mostly multiply zeros.
+// Every point and angle of the tree depends on at most six coordinates, the
+// trunk's (x, y, pitch) and its leg's (hip, knee, ankle): ColumnsOf(its leg).
+// Each force's derivative terms are assembled in that 6x6 block and scattered
+// into the 9x9 matrices: the dense products would mostly multiply zeros.
 using Row6 = Eigen::Matrix<double, 1, 6>;
 using Jac2x6 = Eigen::Matrix<double, 2, 6>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 struct Block {
-  std::array<int, 6> cols;
-  explicit Block(int leg)
-      : cols{kX, kY, kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)} {}
+  TreeColumns cols;
+  explicit Block(int leg) : cols(ColumnsOf(leg)) {}
   Row6 Gather(const Row9& r) const {
     Row6 out;
     for (int i = 0; i < 6; ++i) out(i) = r(cols[i]);
@@ -34,16 +33,6 @@ struct Block {
     }
   }
 };
-
-// The leg a point or angle belongs to (the trunk's belong to either: their
-// joint columns are zero).
-int LegOf(const PointKinematics& p) {
-  for (int k = 0; k < p.num_links; ++k) {
-    const Row9& j = p.links[k].body->j;
-    if (j(JointIndex(kRight, kHip)) != 0.0) return kRight;
-  }
-  return kLeft;
-}
 
 // d(J^T F) for a force F(q, v) applied at point p, given dF/dq and dF/dv in
 // the point's block
@@ -68,7 +57,7 @@ Jac2x6 LocalVelocityJacobian(const PointKinematics& p, const Block& block) {
 // gravity and inertia of a point mass at fixed a: F = m (g - J a - a_bias)
 void AddPointMassDerivatives(double m, double gravity, const PointKinematics& p, const Vec9& a, Mat9* dR_dq,
                              Mat9* dR_dv) {
-  const Block block(LegOf(p));
+  const Block block(p.leg);
   const Vec2 F = m * (Vec2(0.0, -gravity) - p.J * a - p.a_bias);
   Jac2x6 dF_dq = Jac2x6::Zero(), dF_dv = Jac2x6::Zero();
   for (int k = 0; k < p.num_links; ++k) {
@@ -103,7 +92,7 @@ void AddGroundContactDerivatives(const Model& model, const Kinematics& kin, Mat9
     if (!IsKneeCircle(i)) {
       // a box corner: a material point of its box
       const PointKinematics p = OffsetPoint(*carrier.base, *carrier.body, carrier.r);
-      const Block block(LegOf(p));
+      const Block block(p.leg);
       const Jac2x6 J = block.Gather(p.J), dv_dq = LocalVelocityJacobian(p, block);
       const double depth = -p.p.y(), rate = -p.v.y(), slip = p.v.x();
       const Eigen::Matrix<double, 2, 3> D = GroundForceDerivatives(c, depth, rate, slip);
@@ -117,7 +106,7 @@ void AddGroundContactDerivatives(const Model& model, const Kinematics& kin, Mat9
     // a knee circle: the force acts at the knee, and friction also turns the
     // femur by R F_t (the offset stays vertical: it does not turn)
     const PointKinematics& knee = *carrier.base;
-    const Block block(LegOf(knee));
+    const Block block(knee.leg);
     const Row6 femur = block.Gather(carrier.body->j);
     const double radius = -carrier.r.y();
     const Jac2x6 J = block.Gather(knee.J), dv_dq = LocalVelocityJacobian(knee, block);
