@@ -4,54 +4,45 @@
 // relative fitness difference. Not a Google Benchmark: a measurement for
 // docs/performance.md.
 //
-//   accuracy DIR [VARIANT | rtol atol_position atol_velocity]   (variants: bench/variants.h)
+// With --ensemble N, each genome is evaluated N times at each of the two
+// settings, perturbed as control/accuracy.h says, and the medians are
+// compared (docs/performance.md, "Accuracy").
+//
+//   accuracy DIR [--ensemble N] [VARIANT | rtol atol_position atol_velocity]   (variants: bench/variants.h)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "bench/variants.h"
-#include "control/evaluation.h"
+#include "control/accuracy.h"
 
 using namespace walkers;
 
-int main(int argc, char** argv) {
-  if (argc != 2 && argc != 3 && argc != 5) {
-    std::fprintf(stderr, "usage: %s GENOME_DIR [VARIANT | rtol atol_position atol_velocity]\n", argv[0]);
-    return 2;
-  }
-  EvaluationSettings production;
-  if (argc == 3) {
-    bool found = false;
-    for (const bench::Variant& v : bench::Variants()) {
-      if (v.name == argv[2]) {
-        production = v.settings;
-        found = true;
-      }
-    }
-    if (!found) {
-      std::fprintf(stderr, "unknown variant %s\n", argv[2]);
-      return 2;
-    }
-  }
-  if (argc == 5) {
-    production.integrator.relative_tolerance = std::atof(argv[2]);
-    production.integrator.absolute_tolerance_position = std::atof(argv[3]);
-    production.integrator.absolute_tolerance_velocity = std::atof(argv[4]);
-  }
-  EvaluationSettings tight = production;
-  tight.integrator.relative_tolerance /= 100.0;
-  tight.integrator.absolute_tolerance_position /= 100.0;
-  tight.integrator.absolute_tolerance_velocity /= 100.0;
+namespace {
 
+int Usage(const char* program) {
+  std::fprintf(stderr, "usage: %s GENOME_DIR [--ensemble N] [VARIANT | rtol atol_position atol_velocity]\n",
+               program);
+  return 2;
+}
+
+// the genomes (*.json) of a directory, sorted by name
+std::vector<std::string> GenomeFiles(const std::string& dir) {
   std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(argv[1])) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() == ".json") files.push_back(entry.path().string());
   }
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+void CompareSingle(const std::vector<std::string>& files, const EvaluationSettings& production,
+                   const EvaluationSettings& tight) {
   std::vector<double> differences, walls;
   int gait_disagreements = 0, fall_disagreements = 0;
   std::printf("%-28s %10s %10s %8s %7s %7s %9s %9s\n", "genome", "fitness", "tight", "rel.diff", "gait", "fell",
@@ -60,22 +51,82 @@ int main(int argc, char** argv) {
     const Genome g = LoadGenome(file);
     const EvaluationResult a = Evaluate(g, OriginalPreset(), production);
     const EvaluationResult b = Evaluate(g, OriginalPreset(), tight);
-    // relative to the tighter result; fitnesses near zero compare absolutely
-    const double difference = std::abs(a.fitness - b.fitness) / std::max(1.0, std::abs(b.fitness));
-    differences.push_back(difference);
+    differences.push_back(RelativeFitnessDifference(a.fitness, b.fitness));
     walls.push_back(a.wall_ms);
     gait_disagreements += a.gait != b.gait ? 1 : 0;
     fall_disagreements += a.fell != b.fell ? 1 : 0;
     std::printf("%-28s %10.4f %10.4f %7.2f%% %3s/%-3s %3d/%-3d %9.1f %9.1f\n",
-                std::filesystem::path(file).stem().string().c_str(), a.fitness, b.fitness, 100.0 * difference,
-                GaitName(a.gait), GaitName(b.gait), a.fell, b.fell, a.wall_ms, b.wall_ms);
+                std::filesystem::path(file).stem().string().c_str(), a.fitness, b.fitness,
+                100.0 * differences.back(), GaitName(a.gait), GaitName(b.gait), a.fell, b.fell, a.wall_ms,
+                b.wall_ms);
   }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  };
   std::printf("median relative fitness difference %.2f%%; gait disagreements %d; fall disagreements %d; "
               "median wall %.1f ms\n",
-              100.0 * median(differences), gait_disagreements, fall_disagreements, median(walls));
+              100.0 * Median(differences), gait_disagreements, fall_disagreements, Median(walls));
+}
+
+void CompareEnsembles(const std::vector<std::string>& files, const EvaluationSettings& production,
+                      const EvaluationSettings& tight, int n) {
+  std::vector<double> differences;
+  std::printf("%-28s %28s %28s %8s %9s %9s\n", "genome", "fitness: median [min, max]", "tight: median [min, max]",
+              "rel.diff", "bipeds", "falls");
+  for (const std::string& file : files) {
+    const Genome g = LoadGenome(file);
+    const FitnessEnsemble a = EvaluateEnsemble(g, OriginalPreset(), production, n);
+    const FitnessEnsemble b = EvaluateEnsemble(g, OriginalPreset(), tight, n);
+    differences.push_back(RelativeFitnessDifference(a.Median(), b.Median()));
+    std::printf("%-28s %8.3f [%7.3f, %7.3f] %8.3f [%7.3f, %7.3f] %7.2f%% %4d/%-4d %4d/%-4d\n",
+                std::filesystem::path(file).stem().string().c_str(), a.Median(), a.Min(), a.Max(), b.Median(),
+                b.Min(), b.Max(),
+                100.0 * differences.back(), a.bipeds, b.bipeds, a.falls, b.falls);
+  }
+  std::printf("%d evaluations per genome and setting; median relative difference of the medians %.2f%%\n", n,
+              100.0 * Median(differences));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  int ensemble = 0;
+  if (args.size() >= 3 && args[1] == "--ensemble") {
+    ensemble = std::atoi(args[2].c_str());
+    if (ensemble < 1) return Usage(argv[0]);
+    args.erase(args.begin() + 1, args.begin() + 3);
+  }
+  if (args.size() != 1 && args.size() != 2 && args.size() != 4) return Usage(argv[0]);
+  EvaluationSettings production;
+  if (args.size() == 2) {
+    bool found = false;
+    for (const bench::Variant& v : bench::Variants()) {
+      if (v.name == args[1]) {
+        production = v.settings;
+        found = true;
+      }
+    }
+    if (!found) {
+      std::fprintf(stderr, "unknown variant %s\n", args[1].c_str());
+      return 2;
+    }
+  }
+  if (args.size() == 4) {
+    production.integrator.relative_tolerance = std::atof(args[1].c_str());
+    production.integrator.absolute_tolerance_position = std::atof(args[2].c_str());
+    production.integrator.absolute_tolerance_velocity = std::atof(args[3].c_str());
+  }
+  const EvaluationSettings tight = HundredTimesTighter(production);
+
+  std::vector<std::string> files;
+  try {
+    files = GenomeFiles(args[0]);
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::fprintf(stderr, "%s: cannot read the directory: %s\n", args[0].c_str(), e.what());
+    return 2;
+  }
+  if (ensemble > 0) {
+    CompareEnsembles(files, production, tight, ensemble);
+  } else {
+    CompareSingle(files, production, tight);
+  }
   return 0;
 }

@@ -1,0 +1,42 @@
+// How accurately an evaluation's settings compute fitness (docs/performance.md,
+// "Accuracy"). The walk is chaotic: a perturbation far below the integration
+// error (the relative tolerance scaled by 1 + 1e-4) can move a touchdown by a
+// controller tick and a walker's fitness by tens of per cent, at any
+// tolerance. One evaluation per setting therefore says little; an ensemble of
+// such perturbations shows the spread and gives a median to compare.
+#pragma once
+
+#include <vector>
+
+#include "control/evaluation.h"
+
+namespace walkers {
+
+// The same settings with the relative and both absolute tolerances divided by 100.
+EvaluationSettings HundredTimesTighter(const EvaluationSettings& settings);
+
+// |fitness - reference| relative to the reference; fitnesses near zero
+// (|reference| < 1) compare absolutely.
+double RelativeFitnessDifference(double fitness, double reference);
+
+// The median of some values; 0 if there are none.
+double Median(std::vector<double> values);
+
+struct FitnessEnsemble {
+  std::vector<double> fitness;  // one per member, in order of the perturbation
+  int bipeds = 0;
+  int falls = 0;
+
+  // of the fitnesses; 0 for an empty ensemble
+  double Median() const { return walkers::Median(fitness); }
+  double Min() const;
+  double Max() const;
+};
+
+// `size` evaluations of the genome, member k with the relative tolerance
+// scaled by 1 + 1e-4 (k - (size - 1) / 2): for an odd size the middle member
+// is the settings themselves.
+FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
+                                 int size);
+
+}  // namespace walkers
