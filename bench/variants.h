@@ -35,7 +35,8 @@ inline std::vector<Variant> Variants() {
       [](EvaluationSettings* s) { s->integrator.jacobian = JacobianSource::kFiniteDifference; });
   add("dense_linear_solver", [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kDense; });
   add("restart_every_tick", [](EvaluationSettings* s) { s->integrator.restart_on_torque_change = true; });
-  add("velocity_atol_1e-4", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-4; });
+  add("velocity_atol_1e-3", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-3; });
+  add("velocity_atol_1e-2", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-2; });
   add("tolerances_1e-5", [](EvaluationSettings* s) {
     s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 1e-5;
   });

@@ -1,13 +1,15 @@
-// Accuracy is not traded for speed (docs/performance.md): on a subset of the
-// benchmark genomes, the production settings' fitness agrees with the same
-// evaluation at 100x tighter tolerances, and the gait class and fall verdict
-// agree.
-#include <algorithm>
-#include <cmath>
+// Accuracy is not traded for speed (docs/performance.md, "Accuracy"): on a
+// subset of the benchmark genomes, the production settings' fitness agrees
+// with the same evaluation at 100x tighter tolerances, and the gait class and
+// fall verdict agree. The walk is chaotic, so each side is a small ensemble of
+// perturbed evaluations (control/accuracy.h) and the medians are compared; a
+// single evaluation per side passes or fails with the last bits of the
+// arithmetic. The subset holds the walkers whose fitness the tight tolerances
+// do pin down (walkers with a regular gait, and a faller); for the chaotic
+// ones no tolerance does, and docs/performance.md shows their spread.
+#include "control/accuracy.h"
 
 #include <gtest/gtest.h>
-
-#include "control/evaluation.h"
 
 namespace walkers {
 namespace {
@@ -17,22 +19,52 @@ std::string BenchGenome(const std::string& name) {
 }
 
 TEST(AccuracyTest, ProductionSettingsAgreeWithHundredTimesTighterTolerances) {
-  EvaluationSettings production, tight;
-  tight.integrator.relative_tolerance /= 100.0;
-  tight.integrator.absolute_tolerance_position /= 100.0;
-  tight.integrator.absolute_tolerance_velocity /= 100.0;
+  const EvaluationSettings production;
+  const EvaluationSettings tight = HundredTimesTighter(production);
+  constexpr int kEnsembleSize = 9;
+  struct Case {
+    const char* name;
+    bool regular;  // a regular gait: every perturbed evaluation scores the same
+  };
   std::vector<double> differences;
-  for (const char* name : {"performance_best_biped", "short_trunk_biped", "time_mid_biped", "evolved_faller"}) {
-    const Genome g = LoadGenome(BenchGenome(name));
-    const EvaluationResult a = Evaluate(g, OriginalPreset(), production);
-    const EvaluationResult b = Evaluate(g, OriginalPreset(), tight);
-    EXPECT_EQ(a.gait, b.gait) << name;
-    EXPECT_EQ(a.fell, b.fell) << name;
-    differences.push_back(std::abs(a.fitness - b.fitness) / std::max(1.0, std::abs(b.fitness)));
+  for (const Case& c : {Case{"performance_best_biped", true}, Case{"short_trunk_biped", true},
+                        Case{"early_long_tripod", false}, Case{"evolved_faller", false}}) {
+    const Genome g = LoadGenome(BenchGenome(c.name));
+    const FitnessEnsemble a = EvaluateEnsemble(g, OriginalPreset(), production, kEnsembleSize);
+    const FitnessEnsemble b = EvaluateEnsemble(g, OriginalPreset(), tight, kEnsembleSize);
+    // the majority's gait and fall verdict
+    EXPECT_EQ(2 * a.bipeds > kEnsembleSize, 2 * b.bipeds > kEnsembleSize) << c.name;
+    EXPECT_EQ(2 * a.falls > kEnsembleSize, 2 * b.falls > kEnsembleSize) << c.name;
+    differences.push_back(RelativeFitnessDifference(a.Median(), b.Median()));
+    // the integration error must not decide a regular walker's steps: at an
+    // absolute velocity tolerance of 1e-2 some members of this ensemble
+    // scored 5 % more than the rest
+    if (c.regular) {
+      EXPECT_LT(RelativeFitnessDifference(a.Min(), b.Median()), 0.01) << c.name;
+      EXPECT_LT(RelativeFitnessDifference(a.Max(), b.Median()), 0.01) << c.name;
+    }
   }
-  std::sort(differences.begin(), differences.end());
-  const double median = 0.5 * (differences[1] + differences[2]);
-  EXPECT_LT(median, 0.01) << "median relative fitness difference";
+  EXPECT_LT(Median(differences), 0.01) << "median relative fitness difference";
+}
+
+TEST(AccuracyTest, EnsembleMembersDifferOnlyInTheRelativeTolerance) {
+  const Genome g = LoadGenome(BenchGenome("short_trunk_biped"));
+  EvaluationSettings settings;
+  settings.duration = 3.0;
+  const FitnessEnsemble e = EvaluateEnsemble(g, OriginalPreset(), settings, 3);
+  ASSERT_EQ(e.fitness.size(), 3u);
+  // the middle member is the settings themselves
+  EXPECT_EQ(e.fitness[1], Evaluate(g, OriginalPreset(), settings).fitness);
+  settings.integrator.relative_tolerance *= 1.0 - 1e-4;
+  EXPECT_EQ(e.fitness[0], Evaluate(g, OriginalPreset(), settings).fitness);
+  EXPECT_LE(e.Min(), e.Median());
+  EXPECT_LE(e.Median(), e.Max());
+}
+
+TEST(AccuracyTest, MedianOfEvenAndOddCounts) {
+  EXPECT_EQ(Median({}), 0.0);
+  EXPECT_EQ(Median({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_EQ(Median({4.0, 1.0, 3.0, 2.0}), 2.5);
 }
 
 }  // namespace
