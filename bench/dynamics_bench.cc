@@ -11,6 +11,7 @@
 #include "control/genome.h"
 #include "control/start_pose.h"
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/tree_ldlt9.h"
 #include "dynamics/integrator.h"
 #include "dynamics/jacobian.h"
 #include "dynamics/schur_linear_solver.h"
@@ -34,6 +35,13 @@ class PlantedWalker : public benchmark::Fixture {
   }
 
  protected:
+  Mat9 MassMatrixHere() {
+    ComputeKinematics(model_, state_.q, state_.v, &workspace_.kin);
+    Mat9 M;
+    MassMatrix(model_, workspace_.kin, &M);
+    return M;
+  }
+
   Model model_;
   Inputs inputs_;
   State state_;
@@ -86,30 +94,36 @@ BENCHMARK_F(PlantedWalker, AccelerationJacobian)(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations());
 }
 
-// the mass matrix's factorisation and one solve: ours against Eigen's LLT
-BENCHMARK_F(PlantedWalker, MassMatrixSolve_Cholesky9)(benchmark::State& st) {
-  ComputeKinematics(model_, state_.q, state_.v, &workspace_.kin);
-  MassMatrix(model_, workspace_.kin, &workspace_.M);
-  Cholesky9 cholesky;
+// the mass matrix's factorisation and one solve: ours against Eigen's LLT and LDLT
+BENCHMARK_F(PlantedWalker, MassMatrixSolve_TreeLdlt9)(benchmark::State& st) {
+  const Mat9 M = MassMatrixHere();
+  TreeLdlt9 ldlt;
   for (auto _ : st) {
-    cholesky.Compute(workspace_.M);
+    ldlt.Compute(M);
     Vec9 x = Vec9::Ones();
-    cholesky.SolveInPlace(&x);
+    ldlt.SolveInPlace(&x);
+    benchmark::DoNotOptimize(x);
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
+template <typename EigenDecomposition>
+void SolveWithEigen(const Mat9& M, benchmark::State& st) {
+  EigenDecomposition decomposition(kNumCoords);
+  for (auto _ : st) {
+    decomposition.compute(M);
+    Vec9 x = decomposition.solve(Vec9::Ones());
     benchmark::DoNotOptimize(x);
   }
   st.SetItemsProcessed(st.iterations());
 }
 
 BENCHMARK_F(PlantedWalker, MassMatrixSolve_EigenLLT)(benchmark::State& st) {
-  ComputeKinematics(model_, state_.q, state_.v, &workspace_.kin);
-  MassMatrix(model_, workspace_.kin, &workspace_.M);
-  Eigen::LLT<Mat9> llt(kNumCoords);
-  for (auto _ : st) {
-    llt.compute(workspace_.M);
-    Vec9 x = llt.solve(Vec9::Ones());
-    benchmark::DoNotOptimize(x);
-  }
-  st.SetItemsProcessed(st.iterations());
+  SolveWithEigen<Eigen::LLT<Mat9>>(MassMatrixHere(), st);
+}
+
+BENCHMARK_F(PlantedWalker, MassMatrixSolve_EigenLDLT)(benchmark::State& st) {
+  SolveWithEigen<Eigen::LDLT<Mat9>>(MassMatrixHere(), st);
 }
 
 // ground contact of every point, at a state where the trunk and feet touch

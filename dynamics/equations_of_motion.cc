@@ -111,9 +111,9 @@ bool ForwardDynamics(const Model& model, const Inputs& inputs, const Vec9& q, co
     ws->Q(i) = 0.0;
   }
 
-  if (!ws->cholesky.Compute(ws->M)) return false;
+  if (!ws->mass_ldlt.Compute(ws->M)) return false;
   *qdd = ws->Q;
-  ws->cholesky.SolveInPlace(qdd);
+  ws->mass_ldlt.SolveInPlace(qdd);
   return qdd->allFinite();
 }
 

@@ -3,7 +3,7 @@
 // joint stops and the held joint torques.
 #pragma once
 
-#include "dynamics/cholesky9.h"
+#include "dynamics/tree_ldlt9.h"
 #include "dynamics/contact.h"
 #include "dynamics/coords.h"
 #include "dynamics/kinematics.h"
@@ -22,7 +22,7 @@ struct Workspace {
   Kinematics kin;
   Mat9 M = Mat9::Identity();
   Vec9 Q = Vec9::Zero();
-  Cholesky9 cholesky;  // of M (locked rows and columns replaced by the identity)
+  TreeLdlt9 mass_ldlt;  // of M (locked rows and columns replaced by the identity)
 };
 
 // Mass matrix from computed kinematics: sum of m J^T J over point masses and

@@ -219,7 +219,7 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
     }
   }
 
-  // a locked coordinate does not accelerate: its rows vanish (ws->cholesky
+  // a locked coordinate does not accelerate: its rows vanish (ws->mass_ldlt
   // holds the correspondingly masked mass matrix)
   for (int i = 0; i < kNumCoords; ++i) {
     if (!model.options.locked[i]) continue;
@@ -228,8 +228,8 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
   }
   *da_dq = dR_dq;
   *da_dv = dR_dv;
-  ws->cholesky.SolveInPlace(da_dq);
-  ws->cholesky.SolveInPlace(da_dv);
+  ws->mass_ldlt.SolveInPlace(da_dq);
+  ws->mass_ldlt.SolveInPlace(da_dv);
   return da_dq->allFinite() && da_dv->allFinite();
 }
 
