@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <stdexcept>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -84,17 +84,24 @@ void CompareEnsembles(const std::vector<std::string>& files, const EvaluationSet
               100.0 * Median(differences));
 }
 
-}  // namespace
+// A tolerance from the command line: a positive number, or an error naming it.
+double ParseTolerance(const std::string& name, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value > 0.0) || !std::isfinite(value)) {
+    throw std::invalid_argument(name + " must be a positive number, got '" + text + "'");
+  }
+  return value;
+}
 
-int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
+int Run(const char* program, std::vector<std::string> args) {
   int ensemble = 0;
   if (args.size() >= 3 && args[1] == "--ensemble") {
     ensemble = std::atoi(args[2].c_str());
-    if (ensemble < 1) return Usage(argv[0]);
+    if (ensemble < 1) throw std::invalid_argument("--ensemble must be a positive count, got '" + args[2] + "'");
     args.erase(args.begin() + 1, args.begin() + 3);
   }
-  if (args.size() != 1 && args.size() != 2 && args.size() != 4) return Usage(argv[0]);
+  if (args.size() != 1 && args.size() != 2 && args.size() != 4) return Usage(program);
   EvaluationSettings production;
   if (args.size() == 2) {
     bool found = false;
@@ -104,29 +111,30 @@ int main(int argc, char** argv) {
         found = true;
       }
     }
-    if (!found) {
-      std::fprintf(stderr, "unknown variant %s\n", args[1].c_str());
-      return 2;
-    }
+    if (!found) throw std::invalid_argument("unknown variant " + args[1] + " (bench/variants.h)");
   }
   if (args.size() == 4) {
-    production.integrator.relative_tolerance = std::atof(args[1].c_str());
-    production.integrator.absolute_tolerance_position = std::atof(args[2].c_str());
-    production.integrator.absolute_tolerance_velocity = std::atof(args[3].c_str());
+    production.integrator.relative_tolerance = ParseTolerance("rtol", args[1]);
+    production.integrator.absolute_tolerance_position = ParseTolerance("atol_position", args[2]);
+    production.integrator.absolute_tolerance_velocity = ParseTolerance("atol_velocity", args[3]);
   }
   const EvaluationSettings tight = HundredTimesTighter(production);
-
-  std::vector<std::string> files;
-  try {
-    files = GenomeFiles(args[0]);
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::fprintf(stderr, "%s: cannot read the directory: %s\n", args[0].c_str(), e.what());
-    return 2;
-  }
+  const std::vector<std::string> files = GenomeFiles(args[0]);
   if (ensemble > 0) {
     CompareEnsembles(files, production, tight, ensemble);
   } else {
     CompareSingle(files, production, tight);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return Run(argv[0], std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "accuracy: %s\n", e.what());
+    return 2;
+  }
 }

@@ -11,11 +11,11 @@
 #include "control/genome.h"
 #include "control/start_pose.h"
 #include "dynamics/equations_of_motion.h"
-#include "dynamics/tree_ldlt9.h"
 #include "dynamics/integrator.h"
 #include "dynamics/jacobian.h"
 #include "dynamics/schur_linear_solver.h"
 #include "dynamics/observation.h"
+#include "dynamics/tree_ldlt9.h"
 
 namespace walkers {
 namespace {

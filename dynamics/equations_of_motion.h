@@ -3,11 +3,11 @@
 // joint stops and the held joint torques.
 #pragma once
 
-#include "dynamics/tree_ldlt9.h"
 #include "dynamics/contact.h"
 #include "dynamics/coords.h"
 #include "dynamics/kinematics.h"
 #include "dynamics/model.h"
+#include "dynamics/tree_ldlt9.h"
 
 namespace walkers {
 
