@@ -29,6 +29,10 @@ inline std::vector<Variant> Variants() {
   add("stability_limit_detection", [](EvaluationSettings* s) { s->integrator.stability_limit_detection = true; });
   add("newton_gamma_change_0.15", [](EvaluationSettings* s) { s->integrator.newton_matrix_gamma_change = 0.15; });
   add("newton_gamma_change_1.5", [](EvaluationSettings* s) { s->integrator.newton_matrix_gamma_change = 1.5; });
+  add("max_order_3_newton_gamma_change_0.15", [](EvaluationSettings* s) {
+    s->integrator.max_order = 3;
+    s->integrator.newton_matrix_gamma_change = 0.15;
+  });
   add("newton_matrix_age_50", [](EvaluationSettings* s) { s->integrator.newton_matrix_max_age = 50; });
   add("newton_matrix_age_10", [](EvaluationSettings* s) { s->integrator.newton_matrix_max_age = 10; });
   add("finite_difference_jacobian",
