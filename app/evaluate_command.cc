@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/validators.h"
 #include "app/trajectory_csv.h"
+#include "control/accuracy.h"
 #include "control/evaluation.h"
 #include "control/genome.h"
 #include "dynamics/observation.h"
@@ -21,6 +22,7 @@ struct EvaluateOptions {
   std::string preset = "original";
   std::string trajectory_path;
   bool json = false;
+  int ensemble = 0;  // 0: no ensemble
 };
 
 int RunEvaluate(const EvaluateOptions& opt) {
@@ -39,6 +41,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
   }
   const EvaluationResult r = Evaluate(genome, preset, {}, observer);
   if (csv) csv->Close();
+  const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, opt.ensemble);
 
   if (opt.json) {
     nlohmann::json out = {{"fitness", r.fitness},
@@ -55,6 +58,12 @@ int RunEvaluate(const EvaluateOptions& opt) {
                           {"rhs_evals", r.rhs_evals},
                           {"preset", r.preset}};
     if (!r.failure.empty()) out["failure"] = r.failure;
+    if (opt.ensemble > 0) {
+      out["ensemble"] = {{"size", opt.ensemble},           {"fitness", ensemble.fitness},
+                         {"fitness_median", ensemble.Median()}, {"fitness_min", ensemble.Min()},
+                         {"fitness_max", ensemble.Max()},   {"bipeds", ensemble.bipeds},
+                         {"falls", ensemble.falls}};
+    }
     std::cout << out.dump() << std::endl;
   } else {
     std::printf("fitness %.4f  (distance %.3f m over leg length %.3f m)\n", r.fitness, r.distance, r.leg_length);
@@ -63,6 +72,11 @@ int RunEvaluate(const EvaluateOptions& opt) {
     if (!r.failure.empty()) std::printf("integration failed: %s\n", r.failure.c_str());
     std::printf("simulated %.2f s in %.1f ms: %ld CVODE steps, %ld right-hand sides (preset %s)\n", r.sim_time,
                 r.wall_ms, r.cvode_steps, r.rhs_evals, r.preset.c_str());
+    if (opt.ensemble > 0) {
+      std::printf("ensemble of %d (relative tolerance x 1 + k 1e-4): fitness median %.4f, min %.4f, max %.4f; "
+                  "%d bipeds, %d falls\n",
+                  opt.ensemble, ensemble.Median(), ensemble.Min(), ensemble.Max(), ensemble.bipeds, ensemble.falls);
+    }
   }
   return 0;
 }
@@ -76,6 +90,10 @@ void AddEvaluateCommand(CLI::App& app, Command* selected) {
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--trajectory", opt->trajectory_path, "Write the trajectory as CSV, one row per 1/30 s");
   sub->add_flag("--json", opt->json, "Print one JSON object instead of a summary");
+  sub->add_option("--ensemble", opt->ensemble,
+                  "Also evaluate N times with the relative tolerance scaled by 1 + k 1e-4 and report the "
+                  "fitness's spread (the walk can be chaotic; docs/performance.md, Accuracy)")
+      ->check(CLI::Range(1, 1000));
   sub->callback([opt, selected] { *selected = [opt] { return RunEvaluate(*opt); }; });
 }
 

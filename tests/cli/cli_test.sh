@@ -45,6 +45,12 @@ header=$(head -1 "$tmp/e.csv")
 grep -q ',DS,' "$tmp/e.csv" && grep -Eq ',(LS|RS),' "$tmp/e.csv" ||
   { echo "FAIL: evaluate trajectory has no DS and LS/RS states"; failures=$((failures + 1)); }
 expect 0 '^fitness [-0-9.]+ +\(distance' -- evaluate --genome "$genome" --preset paper
+# evaluate --ensemble: the spread under perturbations of the relative tolerance
+expect 0 '"ensemble":\{"bipeds":[0-9]+,"falls":[0-9]+,"fitness":\[[-0-9.e]+,[-0-9.e]+,[-0-9.e]+\],"fitness_max":' -- \
+  evaluate --genome "$genome" --ensemble 3 --json
+expect 0 '^ensemble of 3 .*fitness median [-0-9.]+, min [-0-9.]+, max [-0-9.]+; [0-3] bipeds, [0-3] falls' -- \
+  evaluate --genome "$genome" --ensemble 3
+expect nonzero 'ensemble: Value 0 not in range 1 to 1000' -- evaluate --genome "$genome" --ensemble 0
 
 # evolve: an uninterrupted run, and the same run killed (SIGKILL) at random
 # moments and resumed each time, end with the same files (but for the
