@@ -41,7 +41,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
   }
   const EvaluationResult r = Evaluate(genome, preset, {}, observer);
   if (csv) csv->Close();
-  const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, opt.ensemble);
+  const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, opt.ensemble, &r);
 
   if (opt.json) {
     nlohmann::json out = {{"fitness", r.fitness},

@@ -10,6 +10,7 @@
 //
 //   accuracy DIR [--ensemble N] [VARIANT | rtol atol_position atol_velocity]   (variants: bench/variants.h)
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -94,11 +95,22 @@ double ParseTolerance(const std::string& name, const std::string& text) {
   return value;
 }
 
+// An ensemble size from the command line: a whole number in 1..1000 (the
+// range of `walkers evaluate --ensemble`), or an error naming it.
+int ParseEnsembleSize(const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE || value < 1 || value > 1000) {
+    throw std::invalid_argument("--ensemble must be a whole number in 1..1000, got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
 int Run(const char* program, std::vector<std::string> args) {
   int ensemble = 0;
   if (args.size() >= 3 && args[1] == "--ensemble") {
-    ensemble = std::atoi(args[2].c_str());
-    if (ensemble < 1) throw std::invalid_argument("--ensemble must be a positive count, got '" + args[2] + "'");
+    ensemble = ParseEnsembleSize(args[2]);
     args.erase(args.begin() + 1, args.begin() + 3);
   }
   if (args.size() != 1 && args.size() != 2 && args.size() != 4) return Usage(program);

@@ -33,12 +33,18 @@ double FitnessEnsemble::Max() const {
 }
 
 FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
-                                 int size) {
+                                 int size, const EvaluationResult* unperturbed) {
   FitnessEnsemble ensemble;
   for (int k = 0; k < size; ++k) {
-    EvaluationSettings member = settings;
-    member.integrator.relative_tolerance *= 1.0 + 1e-4 * (k - (size - 1) / 2);
-    const EvaluationResult r = Evaluate(genome, preset, member);
+    const double offset = k - 0.5 * (size - 1);  // half-integers for an even size
+    EvaluationResult r;
+    if (offset == 0.0 && unperturbed) {
+      r = *unperturbed;
+    } else {
+      EvaluationSettings member = settings;
+      member.integrator.relative_tolerance *= 1.0 + 1e-4 * offset;
+      r = Evaluate(genome, preset, member);
+    }
     ensemble.fitness.push_back(r.fitness);
     ensemble.bipeds += r.gait == Gait::kBiped ? 1 : 0;
     ensemble.falls += r.fell ? 1 : 0;

@@ -34,9 +34,12 @@ struct FitnessEnsemble {
 };
 
 // `size` evaluations of the genome, member k with the relative tolerance
-// scaled by 1 + 1e-4 (k - (size - 1) / 2): for an odd size the middle member
-// is the settings themselves.
+// scaled by 1 + 1e-4 (k - (size - 1) / 2), symmetric about the settings: for
+// an odd size the middle member is the settings themselves. `unperturbed`, if
+// given, is an evaluation of the genome at the settings that the caller has
+// already made; an odd-size ensemble takes its middle member from it instead
+// of evaluating again (the two would be bit-identical).
 FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
-                                 int size);
+                                 int size, const EvaluationResult* unperturbed = nullptr);
 
 }  // namespace walkers

@@ -61,6 +61,45 @@ TEST(AccuracyTest, EnsembleMembersDifferOnlyInTheRelativeTolerance) {
   EXPECT_LE(e.Median(), e.Max());
 }
 
+TEST(AccuracyTest, EvenEnsemblesAreSymmetricAboutTheSettings) {
+  const Genome g = LoadGenome(BenchGenome("short_trunk_biped"));
+  EvaluationSettings settings;
+  settings.duration = 3.0;
+  const FitnessEnsemble e = EvaluateEnsemble(g, OriginalPreset(), settings, 2);
+  ASSERT_EQ(e.fitness.size(), 2u);
+  EvaluationSettings member = settings;
+  member.integrator.relative_tolerance = settings.integrator.relative_tolerance * (1.0 - 0.5e-4);
+  EXPECT_EQ(e.fitness[0], Evaluate(g, OriginalPreset(), member).fitness);
+  member.integrator.relative_tolerance = settings.integrator.relative_tolerance * (1.0 + 0.5e-4);
+  EXPECT_EQ(e.fitness[1], Evaluate(g, OriginalPreset(), member).fitness);
+}
+
+TEST(AccuracyTest, AnOddEnsembleTakesItsMiddleMemberFromAGivenEvaluation) {
+  const Genome g = LoadGenome(BenchGenome("short_trunk_biped"));
+  EvaluationSettings settings;
+  settings.duration = 3.0;
+  const EvaluationResult plain = Evaluate(g, OriginalPreset(), settings);
+  const FitnessEnsemble evaluated = EvaluateEnsemble(g, OriginalPreset(), settings, 3);
+  const FitnessEnsemble reused = EvaluateEnsemble(g, OriginalPreset(), settings, 3, &plain);
+  EXPECT_EQ(reused.fitness, evaluated.fitness);
+  EXPECT_EQ(reused.bipeds, evaluated.bipeds);
+  EXPECT_EQ(reused.falls, evaluated.falls);
+
+  // a result no evaluation of this genome gives shows that it is used, and
+  // only for the middle member
+  EvaluationResult marked = plain;
+  marked.fitness = 123.0;
+  marked.fell = true;
+  marked.gait = Gait::kTripod;
+  const FitnessEnsemble e = EvaluateEnsemble(g, OriginalPreset(), settings, 3, &marked);
+  EXPECT_EQ(e.fitness, (std::vector<double>{evaluated.fitness[0], 123.0, evaluated.fitness[2]}));
+  EXPECT_EQ(e.falls, evaluated.falls + (plain.fell ? 0 : 1));
+  EXPECT_EQ(e.bipeds, evaluated.bipeds - (plain.gait == Gait::kBiped ? 1 : 0));
+  // an even ensemble has no member at the settings themselves
+  EXPECT_EQ(EvaluateEnsemble(g, OriginalPreset(), settings, 2, &marked).fitness,
+            EvaluateEnsemble(g, OriginalPreset(), settings, 2).fitness);
+}
+
 TEST(AccuracyTest, MedianOfEvenAndOddCounts) {
   EXPECT_EQ(Median({}), 0.0);
   EXPECT_EQ(Median({3.0, 1.0, 2.0}), 2.0);
