@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -27,7 +28,7 @@ Progress::Progress(std::string label, double log_interval_s)
       start_(std::chrono::steady_clock::now()),
       last_log_(start_) {}
 
-void Progress::Report(const GenerationSummary& s) {
+void Progress::Report(const GenerationSummary& s, std::optional<double> all_left_s) {
   const auto now = std::chrono::steady_clock::now();
   if (first_generation_ < 0) first_generation_ = s.generation;
   const bool last = s.generation + 1 == s.generations;
@@ -41,11 +42,13 @@ void Progress::Report(const GenerationSummary& s) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const int done = s.generation + 1 - first_generation_;
   const double left = elapsed / done * (s.generations - s.generation - 1);
-  char line[256];
+  // never less than this run's own estimate, which may be the later-informed
+  const std::string all = all_left_s ? ", all runs " + FormatDuration(std::max(*all_left_s, left)) : "";
+  char line[320];
   std::snprintf(line, sizeof(line),
-                "%s gen %d/%d  best %.3f  ave3 %.3f  ceiling %.3f  %.1f evals/s  %s left", label_.c_str(),
+                "%s gen %d/%d  best %.3f  ave3 %.3f  ceiling %.3f  %.1f evals/s  %s left%s", label_.c_str(),
                 s.generation + 1, s.generations, s.best_fitness, s.ave_best3, s.ceiling, s.evals_per_s,
-                FormatDuration(left).c_str());
+                FormatDuration(left).c_str(), all.c_str());
   if (terminal_) {
     std::fprintf(stderr, "\r\033[K%s", line);
     line_open_ = true;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "evolve/run.h"
@@ -12,7 +13,9 @@ namespace walkers::app {
 class Progress {
  public:
   explicit Progress(std::string label, double log_interval_s = 5.0);
-  void Report(const GenerationSummary& s);
+  // `all_left_s`: the caller's estimate of the time left for a whole batch
+  // of runs (walkers reproduce), shown after the run's own.
+  void Report(const GenerationSummary& s, std::optional<double> all_left_s = std::nullopt);
   // Ends the in-place line, if any.
   void Finish();
 

@@ -1,5 +1,6 @@
 // walkers reproduce: the paper's three cases with replicates, their
 // statistics beside the paper's, and its figures.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -35,6 +36,10 @@ int RunReproduce(const ReproduceOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   const int total = 3 * config.replicates;
   int index = 0;
+  // Time left for all runs, from this session's pace: generations are
+  // counted as not done until their run starts and says how many it has.
+  long generations_left = static_cast<long>(total) * config.generations;
+  long generations_done = 0;  // in this session
   std::unique_ptr<Progress> progress;
   ReproductionObserver observer;
   observer.on_run_start = [&](const PlannedRun& run, int completed) {
@@ -44,9 +49,15 @@ int RunReproduce(const ReproduceOptions& opt) {
                  completed >= run.config.generations ? ", done already"
                  : completed > 0                      ? (", resuming after generation " + std::to_string(completed)).c_str()
                                                       : "");
+    generations_left -= std::min(completed, run.config.generations);
     progress = std::make_unique<Progress>(run.name);
   };
-  observer.on_generation = [&](const PlannedRun&, const GenerationSummary& s) { progress->Report(s); };
+  observer.on_generation = [&](const PlannedRun&, const GenerationSummary& s) {
+    --generations_left;
+    ++generations_done;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    progress->Report(s, elapsed / generations_done * generations_left);
+  };
   const ReproductionSummary summary = Reproduce(config, opt.out, opt.resume, threads, observer);
   if (progress) progress->Finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

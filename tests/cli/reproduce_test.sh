@@ -14,6 +14,9 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --threads 2 --out "$tmp/rep" >"$tmp/out.txt" 2>&1 ||
   { cat "$tmp/out.txt"; fail "walkers reproduce exited non-zero"; }
+# progress: each run's time left and that of all runs
+grep -Eq '^free-1 gen 1/3 .* [0-9hms]+ left, all runs [0-9hms]+$' "$tmp/out.txt" ||
+  { cat "$tmp/out.txt"; fail "no progress line with the time left for all runs"; }
 for f in summary.json summary.md walks.json gallery.json; do
   [ -s "$tmp/rep/$f" ] || fail "no $f"
 done
