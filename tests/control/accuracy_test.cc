@@ -47,40 +47,47 @@ TEST(AccuracyTest, ProductionSettingsAgreeWithHundredTimesTighterTolerances) {
   EXPECT_LT(Median(differences), 0.01) << "median relative fitness difference";
 }
 
-TEST(AccuracyTest, EnsembleMembersDifferOnlyInTheRelativeTolerance) {
-  const Genome g = LoadGenome(BenchGenome("short_trunk_biped"));
-  EvaluationSettings settings;
-  settings.duration = 3.0;
-  const FitnessEnsemble e = EvaluateEnsemble(g, OriginalPreset(), settings, 3);
+// Ensembles of a short walk of a regular walker.
+class EnsembleTest : public ::testing::Test {
+ protected:
+  EnsembleTest() : genome_(LoadGenome(BenchGenome("short_trunk_biped"))) { settings_.duration = 3.0; }
+
+  FitnessEnsemble Ensemble(int size, const EvaluationResult* unperturbed = nullptr) const {
+    return EvaluateEnsemble(genome_, OriginalPreset(), settings_, size, unperturbed);
+  }
+  // one evaluation with the relative tolerance scaled by `factor`
+  double FitnessAtScaledTolerance(double factor) const {
+    EvaluationSettings member = settings_;
+    member.integrator.relative_tolerance *= factor;
+    return Evaluate(genome_, OriginalPreset(), member).fitness;
+  }
+
+  Genome genome_;
+  EvaluationSettings settings_;
+};
+
+TEST_F(EnsembleTest, MembersDifferOnlyInTheRelativeTolerance) {
+  const FitnessEnsemble e = Ensemble(3);
   ASSERT_EQ(e.fitness.size(), 3u);
   // the middle member is the settings themselves
-  EXPECT_EQ(e.fitness[1], Evaluate(g, OriginalPreset(), settings).fitness);
-  settings.integrator.relative_tolerance *= 1.0 - 1e-4;
-  EXPECT_EQ(e.fitness[0], Evaluate(g, OriginalPreset(), settings).fitness);
+  EXPECT_EQ(e.fitness[1], Evaluate(genome_, OriginalPreset(), settings_).fitness);
+  EXPECT_EQ(e.fitness[0], FitnessAtScaledTolerance(1.0 - 1e-4));
+  EXPECT_EQ(e.fitness[2], FitnessAtScaledTolerance(1.0 + 1e-4));
   EXPECT_LE(e.Min(), e.Median());
   EXPECT_LE(e.Median(), e.Max());
 }
 
-TEST(AccuracyTest, EvenEnsemblesAreSymmetricAboutTheSettings) {
-  const Genome g = LoadGenome(BenchGenome("short_trunk_biped"));
-  EvaluationSettings settings;
-  settings.duration = 3.0;
-  const FitnessEnsemble e = EvaluateEnsemble(g, OriginalPreset(), settings, 2);
+TEST_F(EnsembleTest, EvenEnsemblesAreSymmetricAboutTheSettings) {
+  const FitnessEnsemble e = Ensemble(2);
   ASSERT_EQ(e.fitness.size(), 2u);
-  EvaluationSettings member = settings;
-  member.integrator.relative_tolerance = settings.integrator.relative_tolerance * (1.0 - 0.5e-4);
-  EXPECT_EQ(e.fitness[0], Evaluate(g, OriginalPreset(), member).fitness);
-  member.integrator.relative_tolerance = settings.integrator.relative_tolerance * (1.0 + 0.5e-4);
-  EXPECT_EQ(e.fitness[1], Evaluate(g, OriginalPreset(), member).fitness);
+  EXPECT_EQ(e.fitness[0], FitnessAtScaledTolerance(1.0 - 0.5e-4));
+  EXPECT_EQ(e.fitness[1], FitnessAtScaledTolerance(1.0 + 0.5e-4));
 }
 
-TEST(AccuracyTest, AnOddEnsembleTakesItsMiddleMemberFromAGivenEvaluation) {
-  const Genome g = LoadGenome(BenchGenome("short_trunk_biped"));
-  EvaluationSettings settings;
-  settings.duration = 3.0;
-  const EvaluationResult plain = Evaluate(g, OriginalPreset(), settings);
-  const FitnessEnsemble evaluated = EvaluateEnsemble(g, OriginalPreset(), settings, 3);
-  const FitnessEnsemble reused = EvaluateEnsemble(g, OriginalPreset(), settings, 3, &plain);
+TEST_F(EnsembleTest, AnOddEnsembleTakesItsMiddleMemberFromAGivenEvaluation) {
+  const EvaluationResult plain = Evaluate(genome_, OriginalPreset(), settings_);
+  const FitnessEnsemble evaluated = Ensemble(3);
+  const FitnessEnsemble reused = Ensemble(3, &plain);
   EXPECT_EQ(reused.fitness, evaluated.fitness);
   EXPECT_EQ(reused.bipeds, evaluated.bipeds);
   EXPECT_EQ(reused.falls, evaluated.falls);
@@ -91,13 +98,12 @@ TEST(AccuracyTest, AnOddEnsembleTakesItsMiddleMemberFromAGivenEvaluation) {
   marked.fitness = 123.0;
   marked.fell = true;
   marked.gait = Gait::kTripod;
-  const FitnessEnsemble e = EvaluateEnsemble(g, OriginalPreset(), settings, 3, &marked);
+  const FitnessEnsemble e = Ensemble(3, &marked);
   EXPECT_EQ(e.fitness, (std::vector<double>{evaluated.fitness[0], 123.0, evaluated.fitness[2]}));
   EXPECT_EQ(e.falls, evaluated.falls + (plain.fell ? 0 : 1));
   EXPECT_EQ(e.bipeds, evaluated.bipeds - (plain.gait == Gait::kBiped ? 1 : 0));
   // an even ensemble has no member at the settings themselves
-  EXPECT_EQ(EvaluateEnsemble(g, OriginalPreset(), settings, 2, &marked).fitness,
-            EvaluateEnsemble(g, OriginalPreset(), settings, 2).fitness);
+  EXPECT_EQ(Ensemble(2, &marked).fitness, Ensemble(2).fitness);
 }
 
 TEST(AccuracyTest, MedianOfEvenAndOddCounts) {
