@@ -32,6 +32,12 @@ double FitnessEnsemble::Max() const {
   return fitness.empty() ? 0.0 : *std::max_element(fitness.begin(), fitness.end());
 }
 
+double FitnessEnsemble::WorstDifferenceFrom(double reference) const {
+  double worst = 0.0;
+  for (double f : fitness) worst = std::max(worst, RelativeFitnessDifference(f, reference));
+  return worst;
+}
+
 FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
                                  int size, const EvaluationResult* unperturbed) {
   FitnessEnsemble ensemble;

@@ -31,6 +31,12 @@ struct FitnessEnsemble {
   double Median() const { return walkers::Median(fitness); }
   double Min() const;
   double Max() const;
+  // the largest RelativeFitnessDifference of a member from `reference`; 0 for
+  // an empty ensemble
+  double WorstDifferenceFrom(double reference) const;
+  // whether the ensemble makes fitness one number: every member within
+  // `tolerance` (relative) of the median
+  bool Pinned(double tolerance) const { return WorstDifferenceFrom(Median()) <= tolerance; }
 };
 
 // `size` evaluations of the genome, member k with the relative tolerance

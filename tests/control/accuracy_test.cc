@@ -106,6 +106,22 @@ TEST_F(EnsembleTest, AnOddEnsembleTakesItsMiddleMemberFromAGivenEvaluation) {
   EXPECT_EQ(Ensemble(2, &marked).fitness, Ensemble(2).fitness);
 }
 
+TEST(AccuracyTest, AnEnsembleIsPinnedWhenEveryMemberIsNearItsMedian) {
+  FitnessEnsemble e;
+  e.fitness = {10.0, 10.05, 9.96};
+  EXPECT_NEAR(e.WorstDifferenceFrom(10.0), 0.005, 1e-15);  // 10.05 - 10 rounds
+  EXPECT_TRUE(e.Pinned(0.01));
+  EXPECT_FALSE(e.Pinned(0.004));
+  e.fitness.push_back(11.0);  // one member 10 % off
+  EXPECT_FALSE(e.Pinned(0.01));
+  // fitnesses near zero compare absolutely, as RelativeFitnessDifference does
+  e.fitness = {-1.0, -1.0, -1.0};
+  EXPECT_TRUE(e.Pinned(0.0));
+  e.fitness = {0.1, 0.2};
+  EXPECT_DOUBLE_EQ(e.WorstDifferenceFrom(0.0), 0.2);
+  EXPECT_EQ(FitnessEnsemble{}.WorstDifferenceFrom(5.0), 0.0);
+}
+
 TEST(AccuracyTest, MedianOfEvenAndOddCounts) {
   EXPECT_EQ(Median({}), 0.0);
   EXPECT_EQ(Median({3.0, 1.0, 2.0}), 2.0);
