@@ -42,7 +42,7 @@ void Progress::Report(const GenerationSummary& s, std::optional<double> all_left
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const int done = s.generation + 1 - first_generation_;
   const double left = elapsed / done * (s.generations - s.generation - 1);
-  // never less than this run's own estimate, which may be the later-informed
+  // all runs cannot end before this one: never show less than its own estimate
   const std::string all = all_left_s ? ", all runs " + FormatDuration(std::max(*all_left_s, left)) : "";
   char line[320];
   std::snprintf(line, sizeof(line),
