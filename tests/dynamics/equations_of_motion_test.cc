@@ -8,6 +8,7 @@
 
 #include "control/genome.h"
 #include "dynamics/energy.h"
+#include "tests/dynamics/default_walker_test.h"
 #include "tests/finite_difference.h"
 
 namespace walkers {
@@ -16,17 +17,15 @@ namespace {
 using testing::MatricesNear;
 using testing::NumericalJacobian;
 
-class EquationsOfMotionTest : public ::testing::Test {
+class EquationsOfMotionTest : public testing::DefaultWalkerTest {
  protected:
-  Model model_ = BuildModel(BodyOf(DefaultGenome()));
-  std::mt19937 rng_{2024};
+  EquationsOfMotionTest() : DefaultWalkerTest(2024) {}
 
   Kinematics At(const Model& m, const Vec9& q, const Vec9& v = Vec9::Zero()) const {
     Kinematics kin;
     ComputeKinematics(m, q, v, &kin);
     return kin;
   }
-  Vec9 RandomQ() { return testing::RandomVector<kNumCoords>(rng_, -1.5, 1.5); }
   Vec9 RandomV() { return testing::RandomVector<kNumCoords>(rng_, -3.0, 3.0); }
 };
 

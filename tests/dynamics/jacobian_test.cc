@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "control/genome.h"
+#include "tests/dynamics/default_walker_test.h"
 #include "tests/finite_difference.h"
 
 namespace walkers {
@@ -13,10 +14,9 @@ namespace {
 using testing::MatricesNear;
 using testing::NumericalJacobian;
 
-class JacobianTest : public ::testing::Test {
+class JacobianTest : public testing::DefaultWalkerTest {
  protected:
-  Model model_ = BuildModel(BodyOf(DefaultGenome()));
-  std::mt19937 rng_{31};
+  JacobianTest() : DefaultWalkerTest(31) {}
 
   // lowers (or raises) the walker so that its lowest contact point is `depth`
   // into the ground, and gives it a small random velocity

@@ -8,6 +8,7 @@
 
 #include "control/genome.h"
 #include "dynamics/contact.h"
+#include "tests/dynamics/default_walker_test.h"
 #include "tests/finite_difference.h"
 
 namespace walkers {
@@ -34,17 +35,15 @@ std::vector<std::pair<std::string, PointOf>> AllPoints() {
   return points;
 }
 
-class KinematicsTest : public ::testing::Test {
+class KinematicsTest : public testing::DefaultWalkerTest {
  protected:
-  Model model_ = BuildModel(BodyOf(DefaultGenome()));
-  std::mt19937 rng_{12345};
+  KinematicsTest() : DefaultWalkerTest(12345) {}
 
   Kinematics At(const Vec9& q, const Vec9& v = Vec9::Zero()) const {
     Kinematics kin;
     ComputeKinematics(model_, q, v, &kin);
     return kin;
   }
-  Vec9 RandomQ() { return testing::RandomVector<kNumCoords>(rng_, -1.5, 1.5); }
 };
 
 TEST_F(KinematicsTest, PointJacobiansMatchFiniteDifferences) {

@@ -9,15 +9,15 @@
 #include "dynamics/energy.h"
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/kinematics.h"
+#include "tests/dynamics/default_walker_test.h"
 #include "tests/finite_difference.h"
 
 namespace walkers {
 namespace {
 
-class PlantingTest : public ::testing::Test {
+class PlantingTest : public testing::DefaultWalkerTest {
  protected:
-  Model model_ = BuildModel(BodyOf(DefaultGenome()));
-  std::mt19937 rng_{5};
+  PlantingTest() : DefaultWalkerTest(5) {}
 
   // a swinging walker: standing pose, the left foot a little off its pose, moving
   State Swinging() {

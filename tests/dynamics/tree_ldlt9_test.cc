@@ -10,17 +10,16 @@
 
 #include "control/genome.h"
 #include "dynamics/equations_of_motion.h"
+#include "tests/dynamics/default_walker_test.h"
 #include "tests/finite_difference.h"
 
 namespace walkers {
 namespace {
 
-class TreeLdlt9Test : public ::testing::Test {
+class TreeLdlt9Test : public testing::DefaultWalkerTest {
  protected:
-  Model model_ = BuildModel(BodyOf(DefaultGenome()));
-  std::mt19937 rng_{7};
+  TreeLdlt9Test() : DefaultWalkerTest(7) {}
 
-  Vec9 RandomQ() { return testing::RandomVector<kNumCoords>(rng_, -1.5, 1.5); }
   Vec9 RandomB() { return testing::RandomVector<kNumCoords>(rng_, -100.0, 100.0); }
 };
 
