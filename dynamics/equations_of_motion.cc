@@ -16,30 +16,70 @@ constexpr Support<4> LegAngleSupport(int leg) {
   return {kPitch, JointIndex(leg, kHip), JointIndex(leg, kKnee), JointIndex(leg, kAnkle)};
 }
 
+// A leg's supports as compile-time constants. The helpers below take their
+// support as a template argument so that, their loops unrolled, every entry of
+// M and J sits at a constant offset: with the support read from a run-time
+// array (ColumnsOf(leg) in a loop over the legs) every address was computed at
+// run time, which cost more than the products themselves.
+template <int kLeg>
+struct LegSupports {
+  static constexpr TreeColumns kPoint = ColumnsOf(kLeg);
+  static constexpr Support<4> kAngle = LegAngleSupport(kLeg);
+};
+
+// The helpers fill M column by column from scaled Jacobian rows held in local
+// arrays (m J(0, :), m J(1, :), I j): down one column of M the entries are
+// adjacent in memory (M is column-major) and each is the same expression of
+// the next local value, so the compiler pairs them into SSE2 operations. Each
+// entry still gets the same products and the same sum; each helper is still
+// one whole pass over its entries, in the order MassMatrix calls them.
+
 // upper triangle of m J^T J over the point's support
-template <size_t N>
-void AddPointMass(double m, const PointKinematics& p, const Support<N>& cols, Mat9* M) {
+template <const auto& kCols>
+void AddPointMass(double m, const PointKinematics& p, Mat9* M) {
+  constexpr size_t N = kCols.size();
+  double mx[N], my[N];
   #pragma GCC unroll 6
   for (size_t a = 0; a < N; ++a) {
-    const int i = cols[a];
-    const double mx = m * p.J(0, i), my = m * p.J(1, i);
+    mx[a] = m * p.J(0, kCols[a]);
+    my[a] = m * p.J(1, kCols[a]);
+  }
+  #pragma GCC unroll 6
+  for (size_t b = 0; b < N; ++b) {
+    const int k = kCols[b];
+    const double jx = p.J(0, k), jy = p.J(1, k);
     #pragma GCC unroll 6
-    for (size_t b = a; b < N; ++b) {
-      const int k = cols[b];
-      (*M)(i, k) += mx * p.J(0, k) + my * p.J(1, k);
-    }
+    for (size_t a = 0; a <= b; ++a) (*M)(kCols[a], k) += mx[a] * jx + my[a] * jy;
   }
 }
 
 // upper triangle of I j^T j over the angle's support
-template <size_t N>
-void AddInertia(double inertia, const AngleKinematics& angle, const Support<N>& cols, Mat9* M) {
+template <const auto& kCols>
+void AddInertia(double inertia, const AngleKinematics& angle, Mat9* M) {
+  constexpr size_t N = kCols.size();
+  double ij[N];
   #pragma GCC unroll 6
-  for (size_t a = 0; a < N; ++a) {
-    const double ij = inertia * angle.j(cols[a]);
+  for (size_t a = 0; a < N; ++a) ij[a] = inertia * angle.j(kCols[a]);
+  #pragma GCC unroll 6
+  for (size_t b = 0; b < N; ++b) {
+    const int k = kCols[b];
+    const double jk = angle.j(k);
     #pragma GCC unroll 6
-    for (size_t b = a; b < N; ++b) (*M)(cols[a], cols[b]) += ij * angle.j(cols[b]);
+    for (size_t a = 0; a <= b; ++a) (*M)(kCols[a], k) += ij[a] * jk;
   }
+}
+
+// one leg's two point masses and three segment inertias, in this order: the
+// order of the passes is the order of the sums in each entry of M, part of its
+// result
+template <int kLeg>
+void AddLeg(const Model& model, const LegKinematics& l, Mat9* M) {
+  using S = LegSupports<kLeg>;
+  AddPointMass<S::kPoint>(model.knee_mass, l.knee, M);
+  AddPointMass<S::kPoint>(model.ankle_mass, l.ankle, M);
+  AddInertia<S::kAngle>(model.femur_inertia, l.femur, M);
+  AddInertia<S::kAngle>(model.tibia_inertia, l.tibia, M);
+  AddInertia<S::kAngle>(model.foot_inertia, l.foot, M);
 }
 
 // gravity and velocity-product forces of a point mass: J^T m (g - a_bias)
@@ -52,17 +92,11 @@ void AddPointMassForces(double m, double gravity, const PointKinematics& p, Vec9
 
 void MassMatrix(const Model& model, const Kinematics& kin, Mat9* M) {
   M->setZero();
-  AddPointMass(model.trunk_mass, kin.trunk, kTrunkSupport, M);
-  AddPointMass(model.hips_mass, kin.hip, kHipSupport, M);
+  AddPointMass<kTrunkSupport>(model.trunk_mass, kin.trunk, M);
+  AddPointMass<kHipSupport>(model.hips_mass, kin.hip, M);
   (*M)(kPitch, kPitch) += model.trunk_inertia;
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    const LegKinematics& l = kin.legs[leg];
-    AddPointMass(model.knee_mass, l.knee, ColumnsOf(leg), M);
-    AddPointMass(model.ankle_mass, l.ankle, ColumnsOf(leg), M);
-    AddInertia(model.femur_inertia, l.femur, LegAngleSupport(leg), M);
-    AddInertia(model.tibia_inertia, l.tibia, LegAngleSupport(leg), M);
-    AddInertia(model.foot_inertia, l.foot, LegAngleSupport(leg), M);
-  }
+  AddLeg<kLeft>(model, kin.legs[kLeft], M);
+  AddLeg<kRight>(model, kin.legs[kRight], M);
   // the lower triangle mirrors the upper
   *M = M->selfadjointView<Eigen::Upper>();
 }
