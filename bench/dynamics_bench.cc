@@ -10,7 +10,9 @@
 
 #include "control/genome.h"
 #include "control/start_pose.h"
+#include "dynamics/block_matrix18.h"
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/fixed_size_ops.h"
 #include "dynamics/integrator.h"
 #include "dynamics/jacobian.h"
 #include "dynamics/schur_linear_solver.h"
@@ -138,9 +140,11 @@ BENCHMARK_F(PlantedWalker, ContactForces)(benchmark::State& st) {
   st.counters["points_touching"] = touching;
 }
 
-// CVODE's Newton system I - gamma J (18x18) from the analytic Jacobian:
-// setup (factorisation) and one solve, Schur complement against dense LU
-void NewtonLinearSolve(benchmark::State& st, bool schur) {
+// What CVODE does at each Newton-matrix setup (cvLsLinSys with a saved
+// Jacobian), then one solve: A = saved J, A = I - gamma*A, factor, solve.
+// The walker's analytic Jacobian; the three ways of IntegratorSettings'
+// LinearSolver.
+void NewtonSetupAndSolve(benchmark::State& st, LinearSolver kind) {
   const Model model = BuildModel(BodyOf(DefaultGenome()));
   const State start = StartState(model);
   Inputs inputs;
@@ -152,31 +156,45 @@ void NewtonLinearSolve(benchmark::State& st, bool schur) {
   SUNContext context;
   SUNContext_Create(nullptr, &context);
   N_Vector x = N_VNew_Serial(18, context), b = N_VNew_Serial(18, context);
-  SUNMatrix A = SUNDenseMatrix(18, 18, context), work = SUNDenseMatrix(18, 18, context);
-  SUNLinearSolver solver = schur ? MakeSchurLinearSolver(x, work, context) : SUNLinSol_Dense(x, work, context);
+  SUNMatrix saved = nullptr;
+  if (kind == LinearSolver::kSchurBlocks) {
+    saved = MakeBlockMatrix18(context);
+    Blocks18* blocks = BlocksOf(saved);
+    blocks->d12.setOnes();
+    blocks->m21 = da_dq;
+    blocks->m22 = da_dv;
+  } else {
+    saved = SUNDenseMatrix(18, 18, context);
+    UseFixedSizeMatrixOps(saved);  // as the integrator does
+    Eigen::Map<Eigen::Matrix<double, 18, 18>> J(SUNDenseMatrix_Data(saved));
+    J.setZero();
+    J.topRightCorner<9, 9>().setIdentity();
+    J.bottomLeftCorner<9, 9>() = da_dq;
+    J.bottomRightCorner<9, 9>() = da_dv;
+  }
+  SUNMatrix A = SUNMatClone(saved);
+  SUNLinearSolver solver = kind == LinearSolver::kDense ? SUNLinSol_Dense(x, A, context)
+                                                        : MakeSchurLinearSolver(x, A, context);
   SUNLinSolInitialize(solver);
-  Eigen::Map<Eigen::Matrix<double, 18, 18>> M(SUNDenseMatrix_Data(A));
-  M.setIdentity();
-  M.topRightCorner<9, 9>() -= gamma * Mat9::Identity();
-  M.bottomLeftCorner<9, 9>() = -gamma * da_dq;
-  M.bottomRightCorner<9, 9>() -= gamma * da_dv;
   N_VConst(1.0, b);
   for (auto _ : st) {
-    SUNMatCopy(A, work);  // the dense solver factors in place, as CVODE lets it
-    SUNLinSolSetup(solver, work);
-    SUNLinSolSolve(solver, work, x, b, 0.0);
+    SUNMatCopy(saved, A);
+    SUNMatScaleAddI(-gamma, A);
+    SUNLinSolSetup(solver, A);
+    SUNLinSolSolve(solver, A, x, b, 0.0);
     benchmark::DoNotOptimize(N_VGetArrayPointer(x)[0]);
   }
   st.SetItemsProcessed(st.iterations());
   SUNLinSolFree(solver);
   SUNMatDestroy(A);
-  SUNMatDestroy(work);
+  SUNMatDestroy(saved);
   N_VDestroy(x);
   N_VDestroy(b);
   SUNContext_Free(&context);
 }
-BENCHMARK_CAPTURE(NewtonLinearSolve, schur_complement, true);
-BENCHMARK_CAPTURE(NewtonLinearSolve, dense_lu, false);
+BENCHMARK_CAPTURE(NewtonSetupAndSolve, schur_blocks, LinearSolver::kSchurBlocks);
+BENCHMARK_CAPTURE(NewtonSetupAndSolve, schur_dense, LinearSolver::kSchurComplement);
+BENCHMARK_CAPTURE(NewtonSetupAndSolve, dense_lu, LinearSolver::kDense);
 
 // 1 s of the limp walker on planted feet, reporting at 30 Hz
 BENCHMARK_F(PlantedWalker, PlantedSimulation1s)(benchmark::State& st) {

@@ -35,8 +35,12 @@ inline std::vector<Variant> Variants() {
   });
   add("newton_matrix_age_50", [](EvaluationSettings* s) { s->integrator.newton_matrix_max_age = 50; });
   add("newton_matrix_age_10", [](EvaluationSettings* s) { s->integrator.newton_matrix_max_age = 10; });
-  add("finite_difference_jacobian",
-      [](EvaluationSettings* s) { s->integrator.jacobian = JacobianSource::kFiniteDifference; });
+  add("finite_difference_jacobian", [](EvaluationSettings* s) {
+    s->integrator.jacobian = JacobianSource::kFiniteDifference;
+    s->integrator.linear_solver = LinearSolver::kSchurComplement;  // CVODE's quotients fill dense matrices only
+  });
+  add("dense_newton_matrix",
+      [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kSchurComplement; });
   add("dense_linear_solver", [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kDense; });
   add("restart_every_tick", [](EvaluationSettings* s) { s->integrator.restart_on_torque_change = true; });
   add("velocity_atol_1e-3", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-3; });

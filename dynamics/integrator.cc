@@ -1,5 +1,6 @@
 #include "dynamics/integrator.h"
 
+#include "dynamics/block_matrix18.h"
 #include "dynamics/fixed_size_ops.h"
 #include "dynamics/jacobian.h"
 #include "dynamics/planting.h"
@@ -45,12 +46,24 @@ struct CvodeCallbacks {
                ? 0
                : -1;
   }
+  // d(q, v)'/d(q, v) = [[0, I], [da/dq, da/dv]] into the block matrix, or
+  // column-major into the dense one
   static int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jacobian, void* self,
                       N_Vector /*tmp1*/, N_Vector /*tmp2*/, N_Vector /*tmp3*/) {
-    return static_cast<Integrator*>(self)->EvaluateJacobian(N_VGetArrayPointer(y),
-                                                            SUNDenseMatrix_Data(jacobian))
-               ? 0
-               : -1;
+    const double* y_data = N_VGetArrayPointer(y);
+    if (Blocks18* blocks = BlocksOf(jacobian)) {
+      blocks->d11.setZero();
+      blocks->d12.setOnes();
+      return static_cast<Integrator*>(self)->EvaluateJacobian(y_data, &blocks->m21, &blocks->m22) ? 0 : -1;
+    }
+    Mat9 da_dq, da_dv;
+    if (!static_cast<Integrator*>(self)->EvaluateJacobian(y_data, &da_dq, &da_dv)) return -1;
+    Eigen::Map<Eigen::Matrix<double, kStateSize, kStateSize>> J(SUNDenseMatrix_Data(jacobian));
+    J.setZero();
+    J.topRightCorner<kNumCoords, kNumCoords>().setIdentity();
+    J.bottomLeftCorner<kNumCoords, kNumCoords>() = da_dq;
+    J.bottomRightCorner<kNumCoords, kNumCoords>() = da_dv;
+    return 0;
   }
   static void ErrorHandler(int /*code*/, const char* /*module*/, const char* /*function*/, char* message,
                            void* self) {
@@ -99,16 +112,27 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
   Check(CVodeSetDeltaGammaMaxLSetup(cv_->mem, settings.newton_matrix_gamma_change), "CVodeSetDeltaGammaMaxLSetup");
   Check(CVodeSetLSetupFrequency(cv_->mem, settings.newton_matrix_max_age), "CVodeSetLSetupFrequency");
 
-  // Newton iteration (CVODE's default) with a direct solver on a dense matrix
-  cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);
-  // before CVodeSetLinearSolver, which clones it for the saved Jacobian
-  if (settings.fixed_size_ops && !UseFixedSizeMatrixOps(cv_->jacobian)) {
-    throw std::runtime_error("CVODE setup failed: fixed-size matrix operations");
+  // Newton iteration (CVODE's default) with a direct solver on a block or a
+  // dense matrix
+  if (settings.linear_solver == LinearSolver::kSchurBlocks) {
+    // CVODE's difference quotients fill dense or band matrices only
+    if (settings.jacobian != JacobianSource::kAnalytic) {
+      throw std::invalid_argument("IntegratorSettings: the block Newton matrix needs the analytic Jacobian");
+    }
+    cv_->jacobian = MakeBlockMatrix18(cv_->context);
+  } else {
+    cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);
+    // before CVodeSetLinearSolver, which clones it for the saved Jacobian
+    if (cv_->jacobian && settings.fixed_size_ops && !UseFixedSizeMatrixOps(cv_->jacobian)) {
+      throw std::runtime_error("CVODE setup failed: fixed-size matrix operations");
+    }
   }
-  cv_->linear_solver = settings.linear_solver == LinearSolver::kSchurComplement
-                           ? MakeSchurLinearSolver(cv_->y, cv_->jacobian, cv_->context)
-                           : SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context);
-  if (!cv_->jacobian || !cv_->linear_solver) throw std::runtime_error("CVODE setup failed: dense solver");
+  if (cv_->jacobian) {
+    cv_->linear_solver = settings.linear_solver == LinearSolver::kDense
+                             ? SUNLinSol_Dense(cv_->y, cv_->jacobian, cv_->context)
+                             : MakeSchurLinearSolver(cv_->y, cv_->jacobian, cv_->context);
+  }
+  if (!cv_->jacobian || !cv_->linear_solver) throw std::runtime_error("CVODE setup failed: Newton matrix or linear solver");
   Check(CVodeSetLinearSolver(cv_->mem, cv_->linear_solver, cv_->jacobian), "CVodeSetLinearSolver");
   if (settings.jacobian == JacobianSource::kAnalytic) {
     Check(CVodeSetJacFn(cv_->mem, &CvodeCallbacks::Jacobian), "CVodeSetJacFn");
@@ -273,19 +297,12 @@ bool Integrator::EvaluateRightHandSide(const double* y, double* ydot) {
   return true;
 }
 
-bool Integrator::EvaluateJacobian(const double* y, double* jacobian) {
+bool Integrator::EvaluateJacobian(const double* y, Mat9* da_dq, Mat9* da_dv) {
   const Eigen::Map<const Vec9> q(y), v(y + kNumCoords);
-  Mat9 da_dq, da_dv;
-  if (!AccelerationJacobian(model_, inputs_, q, v, &workspace_, &da_dq, &da_dv)) {
+  if (!AccelerationJacobian(model_, inputs_, q, v, &workspace_, da_dq, da_dv)) {
     non_finite_ = true;
     return false;
   }
-  // d(q, v)'/d(q, v) = [[0, I], [da/dq, da/dv]], column-major
-  Eigen::Map<Eigen::Matrix<double, kStateSize, kStateSize>> J(jacobian);
-  J.setZero();
-  J.topRightCorner<kNumCoords, kNumCoords>().setIdentity();
-  J.bottomLeftCorner<kNumCoords, kNumCoords>() = da_dq;
-  J.bottomRightCorner<kNumCoords, kNumCoords>() = da_dv;
   return true;
 }
 

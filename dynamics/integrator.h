@@ -14,9 +14,13 @@ namespace walkers {
 
 enum class MultistepMethod { kBdf, kAdams };
 
-// How CVODE's Newton systems (18x18) are solved.
+// How CVODE's Newton systems (18x18) are stored and solved.
 enum class LinearSolver {
-  kSchurComplement,  // factor the 9x9 Schur complement (dynamics/schur_linear_solver.h)
+  // the 9x9 Schur complement (dynamics/schur_linear_solver.h) of a matrix
+  // stored as its blocks (dynamics/block_matrix18.h); needs the analytic
+  // Jacobian. Bit-identical to kSchurComplement, with less copying.
+  kSchurBlocks,
+  kSchurComplement,  // the 9x9 Schur complement of a dense 18x18 matrix
   kDense,            // SUNDIALS' dense LU of the whole matrix
 };
 
@@ -38,7 +42,7 @@ struct IntegratorSettings {
   double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
   int max_order = 5;                          // BDF: 1..5, Adams: 1..12
   JacobianSource jacobian = JacobianSource::kAnalytic;
-  LinearSolver linear_solver = LinearSolver::kSchurComplement;
+  LinearSolver linear_solver = LinearSolver::kSchurBlocks;
   bool stability_limit_detection = false;
   // When CVODE refreshes the Newton matrix I - gamma J: after this relative
   // change of gamma, and at least every this many steps (CVODE's defaults).
@@ -105,8 +109,9 @@ class Integrator {
   friend struct CvodeCallbacks;
   // y' = f(y) for y = (q, v); false when the accelerations are not finite
   bool EvaluateRightHandSide(const double* y, double* ydot);
-  // the 18x18 Jacobian of the right-hand side, column-major into `jacobian`
-  bool EvaluateJacobian(const double* y, double* jacobian);
+  // the lower blocks of the right-hand side's Jacobian [[0, I], [da/dq, da/dv]];
+  // false when they are not finite
+  bool EvaluateJacobian(const double* y, Mat9* da_dq, Mat9* da_dv);
   void Restart();
   void CopyStateToVector();
   void CopyStateFromVector();

@@ -13,6 +13,7 @@
 #include <new>
 #include <type_traits>
 
+#include "dynamics/block_matrix18.h"
 #include "dynamics/coords.h"
 #include "dynamics/fixed_size_ops.h"
 #include "dynamics/lu_solve9.h"
@@ -67,26 +68,20 @@ int Initialize(SUNLinearSolver S) {
   return SUNLS_SUCCESS;
 }
 
-int Setup(SUNLinearSolver S, SUNMatrix A) {
-  Content* c = ContentOf(S);
-  if (!c) return SUNLS_MEM_NULL;
-  c->factored = false;
-  if (!A) return static_cast<int>(c->last_flag = SUNLS_MEM_NULL);
-  if (!IsDense18(A)) return static_cast<int>(c->last_flag = SUNLS_ILL_INPUT);
-
+// Reads the blocks of a dense M, checking that M11 = I and M12 = -gamma*I up
+// to the tolerances (false if not). The diagonals are returned as they are:
+// the algebra uses them, not 1 and -gamma.
+bool ReadDenseBlocks(SUNMatrix A, Vec9* d11, Vec9* d12, Mat9* m21, Mat9* m22) {
   // gamma from M12 = -gamma*I: minus the mean of its diagonal (column-major,
   // M12(i, i) = M(i, 9 + i))
   double gamma = 0.0;
   for (int i = 0; i < kBlock; ++i) gamma -= SUNDenseMatrix_Column(A, kBlock + i)[i];
   gamma /= kBlock;
+  if (!std::isfinite(gamma)) return false;
 
-  // structure check, column by column: M11 = I and M12 = -gamma*I up to the
-  // tolerances; written as !(error <= bound) so that NaN fails too
-  bool structured = std::isfinite(gamma);
+  // column by column; written as !(error <= bound) so that NaN fails too
   const double abs_gamma = std::fabs(gamma);
-  Vec9 d11, d12;
-  Mat9 m22;
-  for (int j = 0; structured && j < kBlock; ++j) {
+  for (int j = 0; j < kBlock; ++j) {
     const double* left = SUNDenseMatrix_Column(A, j);            // column j of [M11; M21]
     const double* right = SUNDenseMatrix_Column(A, kBlock + j);  // column j of [M12; M22]
     for (int i = 0; i < kBlock; ++i) {
@@ -94,23 +89,25 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
       const double m11_error = diagonal ? left[i] - 1.0 : left[i];
       const double m12_error = diagonal ? right[i] + gamma : right[i];
       const double tolerance = diagonal ? kDiagonalTolerance : kOffDiagonalTolerance;
-      if (!(std::fabs(m11_error) <= tolerance) || !(std::fabs(m12_error) <= tolerance * abs_gamma)) {
-        structured = false;
-        break;
-      }
+      if (!(std::fabs(m11_error) <= tolerance) || !(std::fabs(m12_error) <= tolerance * abs_gamma)) return false;
     }
-    d11(j) = left[j];
-    d12(j) = right[j];
-    c->m21.col(j) = Eigen::Map<const Vec9>(left + kBlock);
-    m22.col(j) = Eigen::Map<const Vec9>(right + kBlock);
+    (*d11)(j) = left[j];
+    (*d12)(j) = right[j];
+    m21->col(j) = Eigen::Map<const Vec9>(left + kBlock);
+    m22->col(j) = Eigen::Map<const Vec9>(right + kBlock);
   }
-  if (!structured) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_UNREC);
+  return true;
+}
 
+// Factors the Schur complement of M = [[diag(d11), diag(d12)], [m21, m22]]
+// into c, which keeps what the solves need.
+int FactorSchurComplement(const Vec9& d11, const Vec9& d12, const Mat9& m21, const Mat9& m22, Content* c) {
   // with D11 = diag(M11), D12 = diag(M12) the first block row
   //   D11 x1 + D12 x2 = b1  gives  x1 = D11^{-1} (b1 - D12 x2)
   // and substituting it into the second, M21 x1 + M22 x2 = b2, gives
   //   (M22 - M21 D11^{-1} D12) x2 = b2 - M21 D11^{-1} b1,
   // i.e. S = M22 - M21 diag(d12 / d11) = M22 + gamma*M21 for D11 = I, D12 = -gamma*I
+  c->m21 = m21;
   c->inverse_d11 = d11.cwiseInverse();
   c->ratio = d12.cwiseProduct(c->inverse_d11);
   Mat9 schur;
@@ -133,6 +130,23 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
   c->factored = true;
   c->last_flag = SUNLS_SUCCESS;
   return SUNLS_SUCCESS;
+}
+
+int Setup(SUNLinearSolver S, SUNMatrix A) {
+  Content* c = ContentOf(S);
+  if (!c) return SUNLS_MEM_NULL;
+  c->factored = false;
+  if (!A) return static_cast<int>(c->last_flag = SUNLS_MEM_NULL);
+
+  // a block matrix has the structure by construction
+  if (const Blocks18* blocks = BlocksOf(A)) {
+    return FactorSchurComplement(blocks->d11, blocks->d12, blocks->m21, blocks->m22, c);
+  }
+  if (!IsDense18(A)) return static_cast<int>(c->last_flag = SUNLS_ILL_INPUT);
+  Vec9 d11, d12;
+  Mat9 m21, m22;
+  if (!ReadDenseBlocks(A, &d11, &d12, &m21, &m22)) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_UNREC);
+  return FactorSchurComplement(d11, d12, m21, m22, c);
 }
 
 // The matrix argument is not read: the factorization and the blocks needed
@@ -193,7 +207,7 @@ int Free(SUNLinearSolver S) {
 }  // namespace
 
 SUNLinearSolver MakeSchurLinearSolver(N_Vector y_template, SUNMatrix A, SUNContext context) {
-  if (!context || !IsDense18(A) || !IsSerial18(y_template)) return nullptr;
+  if (!context || !(IsDense18(A) || BlocksOf(A)) || !IsSerial18(y_template)) return nullptr;
 
   SUNLinearSolver S = SUNLinSolNewEmpty(context);
   if (!S) return nullptr;

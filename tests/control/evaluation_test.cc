@@ -46,14 +46,20 @@ TEST(EvaluationTest, IsBitIdenticalTwiceAndOnAnotherThread) {
   ExpectIdentical(first, threaded);
 }
 
-// dynamics/fixed_size_ops promises SUNDIALS' arithmetic in SUNDIALS' order: a
-// whole walk, ~10 k steps through every CVODE code path, must not move a bit
-TEST(EvaluationTest, FixedSizeOperationsChangeNoBit) {
-  EvaluationSettings library;
+// dynamics/fixed_size_ops and dynamics/block_matrix18 promise SUNDIALS'
+// arithmetic in SUNDIALS' order: a whole walk, ~10 k steps through every CVODE
+// code path, must not move a bit with the dense Newton matrix, nor with
+// SUNDIALS' own vector and matrix operations
+TEST(EvaluationTest, FixedSizeOperationsAndTheBlockMatrixChangeNoBit) {
+  EvaluationSettings dense;
+  dense.integrator.linear_solver = LinearSolver::kSchurComplement;
+  EvaluationSettings library = dense;
   library.integrator.fixed_size_ops = false;
   for (const Preset& preset : {OriginalPreset(), PaperPreset()}) {
     SCOPED_TRACE(preset.name);
-    ExpectIdentical(Evaluate(DefaultGenome(), preset), Evaluate(DefaultGenome(), preset, library));
+    const EvaluationResult production = Evaluate(DefaultGenome(), preset);
+    ExpectIdentical(production, Evaluate(DefaultGenome(), preset, dense));
+    ExpectIdentical(production, Evaluate(DefaultGenome(), preset, library));
   }
 }
 
