@@ -25,11 +25,6 @@
 namespace walkers {
 namespace {
 
-constexpr int kN = 18;
-constexpr int kHalf = 9;
-using Mat18 = Eigen::Matrix<double, kN, kN>;
-using Vec18 = Eigen::Matrix<double, kN, 1>;
-
 // the dense matrix a block matrix stands for
 Mat18 Dense(const Blocks18& b) {
   Mat18 m = Mat18::Zero();
@@ -39,9 +34,6 @@ Mat18 Dense(const Blocks18& b) {
   m.bottomRightCorner<kHalf, kHalf>() = b.m22;
   return m;
 }
-
-Mat18 Load(SUNMatrix a) { return Eigen::Map<const Mat18>(SUNDenseMatrix_Data(a)); }
-void Store(const Mat18& m, SUNMatrix a) { Eigen::Map<Mat18>(SUNDenseMatrix_Data(a)) = m; }
 
 // bit for bit, so that -0 and +0 or two NaNs with different payloads differ
 bool SameBits(const Mat18& a, const Mat18& b) { return std::memcmp(a.data(), b.data(), sizeof(double) * kN * kN) == 0; }
@@ -145,10 +137,10 @@ TEST(BlockMatrix18Test, MatrixVectorProductMatchesTheDenseMatrix) {
   ASSERT_EQ(SUNMatScaleAddI(-1e-3, f.blocks.get()), SUNMAT_SUCCESS);
   VectorPtr x{N_VNew_Serial(kN, f.context.get())}, y{N_VNew_Serial(kN, f.context.get())};
   Vec18 xv = Vec18::LinSpaced(-1.0, 2.0);
-  Eigen::Map<Vec18>(N_VGetArrayPointer(x.get())) = xv;
+  Store(xv, x.get());
   ASSERT_EQ(SUNMatMatvec(f.blocks.get(), x.get(), y.get()), SUNMAT_SUCCESS);
   const Vec18 expected = Dense(*BlocksOf(f.blocks.get())) * xv;
-  const Vec18 got = Eigen::Map<const Vec18>(N_VGetArrayPointer(y.get()));
+  const Vec18 got = Load(y.get());
   EXPECT_LT((got - expected).lpNorm<Eigen::Infinity>(), 1e-12 * expected.lpNorm<Eigen::Infinity>());
   EXPECT_GT(expected.lpNorm<Eigen::Infinity>(), 1.0);
 }
@@ -178,11 +170,11 @@ TEST(BlockMatrix18Test, SchurSolverGivesTheDenseMatrixsSolutionsBitForBit) {
 
     Vec18 rhs;
     for (int i = 0; i < kN; ++i) rhs(i) = unit(rng);
-    Eigen::Map<Vec18>(N_VGetArrayPointer(b.get())) = rhs;
+    Store(rhs, b.get());
     ASSERT_EQ(SUNLinSolSolve(on_blocks.get(), f.blocks.get(), x.get(), b.get(), 0.0), SUNLS_SUCCESS);
-    const Vec18 from_blocks = Eigen::Map<const Vec18>(N_VGetArrayPointer(x.get()));
+    const Vec18 from_blocks = Load(x.get());
     ASSERT_EQ(SUNLinSolSolve(on_dense.get(), f.dense.get(), x.get(), b.get(), 0.0), SUNLS_SUCCESS);
-    const Vec18 from_dense = Eigen::Map<const Vec18>(N_VGetArrayPointer(x.get()));
+    const Vec18 from_dense = Load(x.get());
     EXPECT_TRUE(SameBits(from_blocks, from_dense)) << "seed " << seed;
     // and it is a solution
     const Mat18 m = Dense(*BlocksOf(f.blocks.get()));

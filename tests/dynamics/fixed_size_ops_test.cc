@@ -12,8 +12,6 @@
 namespace walkers {
 namespace {
 
-constexpr int kN = kFixedVectorLength;
-
 // The same operation on SUNDIALS' serial vectors and on vectors with the
 // fixed-size operations, from identical data; results must match bit for bit.
 class FixedSizeVectorOpsTest : public ::testing::Test {

@@ -25,26 +25,7 @@
 namespace walkers {
 namespace {
 
-constexpr int kN = 18;
-constexpr int kHalf = 9;
-using Mat18 = Eigen::Matrix<double, kN, kN>;
-using Vec18 = Eigen::Matrix<double, kN, 1>;
 using Mat9 = Eigen::Matrix<double, kHalf, kHalf>;
-
-void Store(const Mat18& m, SUNMatrix a) {
-  for (int j = 0; j < kN; ++j)
-    for (int i = 0; i < kN; ++i) SM_ELEMENT_D(a, i, j) = m(i, j);
-}
-
-Mat18 Load(SUNMatrix a) {
-  Mat18 m;
-  for (int j = 0; j < kN; ++j)
-    for (int i = 0; i < kN; ++i) m(i, j) = SM_ELEMENT_D(a, i, j);
-  return m;
-}
-
-void Store(const Vec18& v, N_Vector n) { Eigen::Map<Vec18>(N_VGetArrayPointer(n)) = v; }
-Vec18 Load(N_Vector n) { return Eigen::Map<const Vec18>(N_VGetArrayPointer(n)); }
 
 // J = [[0, I], [A_q, A_v]]
 Mat18 OdeJacobian(const Mat9& a_q, const Mat9& a_v) {
