@@ -159,19 +159,11 @@ void NewtonSetupAndSolve(benchmark::State& st, LinearSolver kind) {
   SUNMatrix saved = nullptr;
   if (kind == LinearSolver::kSchurBlocks) {
     saved = MakeBlockMatrix18(context);
-    Blocks18* blocks = BlocksOf(saved);
-    blocks->d12.setOnes();
-    blocks->m21 = da_dq;
-    blocks->m22 = da_dv;
   } else {
     saved = SUNDenseMatrix(18, 18, context);
     UseFixedSizeMatrixOps(saved);  // as the integrator does
-    Eigen::Map<Eigen::Matrix<double, 18, 18>> J(SUNDenseMatrix_Data(saved));
-    J.setZero();
-    J.topRightCorner<9, 9>().setIdentity();
-    J.bottomLeftCorner<9, 9>() = da_dq;
-    J.bottomRightCorner<9, 9>() = da_dv;
   }
+  StoreWalkerJacobian(da_dq, da_dv, saved);
   SUNMatrix A = SUNMatClone(saved);
   SUNLinearSolver solver = kind == LinearSolver::kDense ? SUNLinSol_Dense(x, A, context)
                                                         : MakeSchurLinearSolver(x, A, context);

@@ -3,6 +3,7 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_matrix.h>
+#include <sunmatrix/sunmatrix_dense.h>
 
 #include <new>
 
@@ -105,6 +106,23 @@ Blocks18* BlocksOf(SUNMatrix A) {
   // our own getid marks the matrix as ours: SUNMATRIX_CUSTOM alone would not
   if (!A || !A->ops || A->ops->getid != GetId || !A->content) return nullptr;
   return &Content(A);
+}
+
+bool StoreWalkerJacobian(const Mat9& da_dq, const Mat9& da_dv, SUNMatrix A) {
+  if (Blocks18* blocks = BlocksOf(A)) {
+    blocks->d11.setZero();
+    blocks->d12.setOnes();
+    blocks->m21 = da_dq;
+    blocks->m22 = da_dv;
+    return true;
+  }
+  if (!IsDense18(A)) return false;
+  Eigen::Map<Eigen::Matrix<double, 2 * kBlock, 2 * kBlock>> J(SUNDenseMatrix_Data(A));
+  J.setZero();
+  J.topRightCorner<kBlock, kBlock>().setIdentity();
+  J.bottomLeftCorner<kBlock, kBlock>() = da_dq;
+  J.bottomRightCorner<kBlock, kBlock>() = da_dv;
+  return true;
 }
 
 }  // namespace walkers

@@ -43,4 +43,9 @@ SUNMatrix MakeBlockMatrix18(SUNContext context);
 // nullptr for any other matrix.
 Blocks18* BlocksOf(SUNMatrix A);
 
+// Writes the walker's Jacobian J = [[0, I], [da_dq, da_dv]] into A, a block
+// matrix or a dense 18x18 SUNMatrix (column-major). False, writing nothing,
+// for any other matrix.
+bool StoreWalkerJacobian(const Mat9& da_dq, const Mat9& da_dv, SUNMatrix A);
+
 }  // namespace walkers

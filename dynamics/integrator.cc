@@ -46,24 +46,12 @@ struct CvodeCallbacks {
                ? 0
                : -1;
   }
-  // d(q, v)'/d(q, v) = [[0, I], [da/dq, da/dv]] into the block matrix, or
-  // column-major into the dense one
+  // d(q, v)'/d(q, v) = [[0, I], [da/dq, da/dv]] into the block or dense matrix
   static int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jacobian, void* self,
                       N_Vector /*tmp1*/, N_Vector /*tmp2*/, N_Vector /*tmp3*/) {
-    const double* y_data = N_VGetArrayPointer(y);
-    if (Blocks18* blocks = BlocksOf(jacobian)) {
-      blocks->d11.setZero();
-      blocks->d12.setOnes();
-      return static_cast<Integrator*>(self)->EvaluateJacobian(y_data, &blocks->m21, &blocks->m22) ? 0 : -1;
-    }
     Mat9 da_dq, da_dv;
-    if (!static_cast<Integrator*>(self)->EvaluateJacobian(y_data, &da_dq, &da_dv)) return -1;
-    Eigen::Map<Eigen::Matrix<double, kStateSize, kStateSize>> J(SUNDenseMatrix_Data(jacobian));
-    J.setZero();
-    J.topRightCorner<kNumCoords, kNumCoords>().setIdentity();
-    J.bottomLeftCorner<kNumCoords, kNumCoords>() = da_dq;
-    J.bottomRightCorner<kNumCoords, kNumCoords>() = da_dv;
-    return 0;
+    if (!static_cast<Integrator*>(self)->EvaluateJacobian(N_VGetArrayPointer(y), &da_dq, &da_dv)) return -1;
+    return StoreWalkerJacobian(da_dq, da_dv, jacobian) ? 0 : -1;
   }
   static void ErrorHandler(int /*code*/, const char* /*module*/, const char* /*function*/, char* message,
                            void* self) {

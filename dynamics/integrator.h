@@ -58,7 +58,8 @@ struct IntegratorSettings {
   // lands as a plastic impact instead of being yanked by the stiff weld.
   bool project_on_plant = true;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
-  // (dynamics/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones.
+  // (dynamics/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones
+  // (the block Newton matrix has only its own fixed-size operations).
   // Bit-identical results either way; only the speed differs.
   bool fixed_size_ops = true;
   long step_budget = 1000000;  // steps allowed since the last Reset
