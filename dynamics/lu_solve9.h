@@ -54,9 +54,10 @@ struct Lu9 {
   int first_zero_pivot = -1;  // the first column with U(k, k) = 0, or -1
 };
 
-inline void FactorLu9(const Mat9& a, Lu9* out) {
+// Factors out->lu in place: the caller writes the matrix there (a 9x9 copy
+// through Eigen is a loop behind a call, not unrolled).
+inline void FactorLu9(Lu9* out) {
   Mat9& lu = out->lu;
-  lu = a;
   out->first_zero_pivot = -1;
   #pragma GCC unroll 8
   for (int k = 0; k < kNumCoords - 1; ++k) {

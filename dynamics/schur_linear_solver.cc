@@ -107,11 +107,16 @@ int FactorSchurComplement(const Vec9& d11, const Vec9& d12, const Mat9& m21, con
   // and substituting it into the second, M21 x1 + M22 x2 = b2, gives
   //   (M22 - M21 D11^{-1} D12) x2 = b2 - M21 D11^{-1} b1,
   // i.e. S = M22 - M21 diag(d12 / d11) = M22 + gamma*M21 for D11 = I, D12 = -gamma*I
-  c->m21 = m21;
   c->inverse_d11 = d11.cwiseInverse();
   c->ratio = d12.cwiseProduct(c->inverse_d11);
-  Mat9 schur;
-  schur.noalias() = m22 - c->m21 * c->ratio.asDiagonal();
+  // S goes straight where it is factored, and M21 is kept for the solves, in
+  // one unrolled pass (Eigen would loop over each 9x9 behind a call)
+  Mat9& schur = c->schur_lu.lu;
+  #pragma GCC unroll 9
+  for (int j = 0; j < kBlock; ++j) {
+    c->m21.col(j) = m21.col(j);
+    schur.col(j) = m22.col(j) - m21.col(j) * c->ratio(j);
+  }
 
   // a non-finite Jacobian (e.g. an overflowing right-hand side) may go away
   // with a smaller step: recoverable
@@ -120,7 +125,7 @@ int FactorSchurComplement(const Vec9& d11, const Vec9& d12, const Mat9& m21, con
   // factor S with row pivoting; like SUNLinSol_Dense, report the 1-based
   // column of the first zero pivot, here a column of the full matrix
   // (x2 = v part, 10..18), with the recoverable SUNLS_LUFACT_FAIL
-  FactorLu9(schur, &c->schur_lu);
+  FactorLu9(&c->schur_lu);
   if (c->schur_lu.first_zero_pivot >= 0) {
     c->last_flag = kBlock + c->schur_lu.first_zero_pivot + 1;
     return SUNLS_LUFACT_FAIL;

@@ -34,7 +34,8 @@ RandomSystem MakeSystem(unsigned seed) {
 
 Lu9 Factor(const Mat9& a) {
   Lu9 f;
-  FactorLu9(a, &f);
+  f.lu = a;
+  FactorLu9(&f);
   return f;
 }
 
