@@ -158,6 +158,30 @@ void Compare(double c, N_Vector x, N_Vector z) {
   for (int i = 0; i < kN; ++i) zd[i] = std::fabs(xd[i]) >= c ? 1.0 : 0.0;
 }
 
+// ---- fused operations: SUNDIALS' own fallbacks, without the dispatch ----
+// The serial vector's fused operations are disabled, so N_VScaleAddMulti and
+// its kind loop over the ops above through function pointers. These run the
+// same loops over the same operations, in the same order.
+
+// Z[i] = a[i]*x + Y[i], i = 0..nvec-1 in turn (CVODE's Nordsieck correction)
+int ScaleAddMulti(int nvec, double* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
+  for (int i = 0; i < nvec; ++i) LinearSum(a[i], x, 1.0, Y[i], Z[i]);
+  return 0;
+}
+
+// Z[i] = c[i]*X[i], i = 0..nvec-1 in turn (CVODE's rescaling of the history)
+int ScaleVectorArray(int nvec, double* c, N_Vector* X, N_Vector* Z) {
+  for (int i = 0; i < nvec; ++i) Scale(c[i], X[i], Z[i]);
+  return 0;
+}
+
+// z = c[0]*X[0], then z = c[i]*X[i] + z for i = 1..nvec-1
+int LinearCombination(int nvec, double* c, N_Vector* X, N_Vector z) {
+  Scale(c[0], X[0], z);
+  for (int i = 1; i < nvec; ++i) LinearSum(c[i], X[i], 1.0, z, z);
+  return 0;
+}
+
 // ---- dense matrix operations ----
 
 inline double* Data(SUNMatrix A) { return SM_DATA_D(A); }
@@ -194,8 +218,9 @@ SUNMatrix MatrixClone(SUNMatrix A) {
 }  // namespace
 
 bool IsSerial18(N_Vector v) {
-  return v && v->ops && v->ops->nvgetvectorid && v->content && N_VGetVectorID(v) == SUNDIALS_NVEC_SERIAL &&
-         NV_LENGTH_S(v) == kN;
+  // the serial vector's own getvectorid, compared rather than called: the
+  // Schur solver asks this of two vectors at every solve
+  return v && v->ops && v->ops->nvgetvectorid == N_VGetVectorID_Serial && v->content && NV_LENGTH_S(v) == kN;
 }
 
 bool IsDense18(SUNMatrix A) {
@@ -223,6 +248,9 @@ bool UseFixedSizeVectorOps(N_Vector v) {
   ops->nvmin = Min;
   ops->nvminlocal = Min;
   ops->nvcompare = Compare;
+  ops->nvscaleaddmulti = ScaleAddMulti;
+  ops->nvscalevectorarray = ScaleVectorArray;
+  ops->nvlinearcombination = LinearCombination;
   return true;
 }
 

@@ -13,9 +13,13 @@
 // N_VLinearSum's special cases such as c*(x + y) for a == b), so results are
 // bit-identical with or without them; tests/dynamics/fixed_size_ops_test.cc
 // checks every replaced operation against the library's on random data.
-// Operations not replaced (masks, constraints, fused operations, which stay
-// disabled) keep the library's implementation. Clones inherit the replaced
-// operations, so CVODE's internal vectors and its saved Jacobian get them too.
+// The serial vector's fused operations stay disabled: the three CVODE uses
+// (N_VScaleAddMulti, N_VScaleVectorArray, N_VLinearCombination) run
+// SUNDIALS' own fallback loops over the operations above, only without its
+// dispatch. Operations not replaced (masks, constraints, the other fused and
+// array operations) keep the library's implementation. Clones inherit the
+// replaced operations, so CVODE's internal vectors and its saved Jacobian get
+// them too.
 #pragma once
 
 // SUNDIALS handle types, declared as in its headers (see schur_linear_solver.h)

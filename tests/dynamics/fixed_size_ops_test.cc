@@ -103,6 +103,41 @@ TEST_F(FixedSizeVectorOpsTest, ElementwiseOperationsMatch) {
   ExpectSameVectors("Const");
 }
 
+TEST_F(FixedSizeVectorOpsTest, FusedOperationsMatchTheLibrarysFallbacks) {
+  // coefficient pairs that take LinearSum's and Scale's special cases
+  const std::vector<std::pair<double, double>> coefficients = {{1.0, -1.0}, {-1.0, 1.0}, {0.37, -1.9}, {0.5, 0.5}};
+  for (auto [first, second] : coefficients) {
+    const std::string which = " with " + std::to_string(first) + ", " + std::to_string(second);
+    double c[] = {first, second};
+    // in place, as CVODE corrects its history: Y = Z
+    N_Vector library_y[] = {Library(1), Library(2)};
+    N_Vector fixed_y[] = {Fixed(1), Fixed(2)};
+    N_VScaleAddMulti(2, c, Library(0), library_y, library_y);
+    N_VScaleAddMulti(2, c, Fixed(0), fixed_y, fixed_y);
+    ExpectSameVectors("ScaleAddMulti in place" + which);
+    // out of place
+    N_Vector library_z[] = {Library(2)}, fixed_z[] = {Fixed(2)};
+    N_VScaleAddMulti(1, c, Library(0), library_y, library_z);
+    N_VScaleAddMulti(1, c, Fixed(0), fixed_y, fixed_z);
+    ExpectSameVectors("ScaleAddMulti out of place" + which);
+
+    N_Vector library_x[] = {Library(0), Library(1)}, fixed_x[] = {Fixed(0), Fixed(1)};
+    N_VScaleVectorArray(2, c, library_x, library_x);
+    N_VScaleVectorArray(2, c, fixed_x, fixed_x);
+    ExpectSameVectors("ScaleVectorArray in place" + which);
+    N_VScaleVectorArray(1, c, library_x, library_z);
+    N_VScaleVectorArray(1, c, fixed_x, fixed_z);
+    ExpectSameVectors("ScaleVectorArray out of place" + which);
+
+    N_VLinearCombination(2, c, library_x, Library(2));
+    N_VLinearCombination(2, c, fixed_x, Fixed(2));
+    ExpectSameVectors("LinearCombination" + which);
+  }
+  // the library's vectors still take its fallbacks, ours do not
+  EXPECT_EQ(Library(0)->ops->nvscaleaddmulti, nullptr);
+  EXPECT_NE(Fixed(0)->ops->nvscaleaddmulti, nullptr);
+}
+
 TEST_F(FixedSizeVectorOpsTest, ReductionsMatch) {
   ExpectSameBits(N_VWrmsNorm(Library(0), Library(1)), N_VWrmsNorm(Fixed(0), Fixed(1)), "WrmsNorm");
   ExpectSameBits(N_VWSqrSumLocal(Library(0), Library(1)), N_VWSqrSumLocal(Fixed(0), Fixed(1)), "WSqrSumLocal");
