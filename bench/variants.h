@@ -51,8 +51,7 @@ inline std::vector<Variant> Variants() {
   add("tolerances_1e-7", [](EvaluationSettings* s) {
     s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 1e-7;
   });
-  add("slip_velocity_0.05", [](EvaluationSettings* s) { s->contact.slip_velocity = 0.05; });
-  add("contact_dissipation_10", [](EvaluationSettings* s) { s->contact.dissipation = 10.0; });
+  add("friction_transition_0.01", [](EvaluationSettings* s) { s->contact.transition_velocity = 0.01; });
   add("weld_stiffness_1e8", [](EvaluationSettings* s) {
     s->weld.stiffness = 1e8;
     s->weld.angular_stiffness = 1e7;

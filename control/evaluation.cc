@@ -20,24 +20,26 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
 
   WalkingController controller(genome, model, preset);
   Integrator integrator(model, settings.integrator);
-  integrator.Reset(0.0, start, controller.Start(start));
+  // both feet welded at x = 0: on that tie the left foot swings first
+  integrator.Reset(0.0, start, controller.Start(StartWelds(model)));
 
   EvaluationResult result;
   result.preset = preset.name;
   result.leg_length = genome.leg_length();
 
+  // The authors' loop: at each 1/30 s tick the controller decides; a
+  // touchdown first advances one extra tick with the torques held; then the
+  // fall check, the new torques and one tick. It ends after the tick that
+  // reaches the duration.
   const long ticks = std::lround(settings.duration * kControlRate);
   long ticks_after_lock = 0, ticks_in_contact = 0;
   Kinematics kin;
-  for (long k = 0;; ++k) {
-    const double t = k / kControlRate;
-    const State& state = integrator.state();
+  // the bookkeeping of each tick's instant: trunk support, the welds' drift, the distance
+  const auto record = [&](double t, const State& state) {
     ComputeKinematics(model, state.q, state.v, &kin);
-
-    // bookkeeping of this instant: trunk contact, the welds' drift
     if (t >= kLockDuration) {
       ++ticks_after_lock;
-      ticks_in_contact += TrunkTouchesGround(model, kin) ? 1 : 0;
+      ticks_in_contact += TrunkSupported(model, kin) ? 1 : 0;
     }
     for (int leg = 0; leg < kNumLegs; ++leg) {
       const Weld& weld = controller.inputs().welds[leg];
@@ -46,20 +48,37 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
       }
     }
     result.distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
-
-    if (HasFallen(genome, preset, state)) {
+  };
+  const auto advance = [&](long k) {
+    const IntegrationStatus status = integrator.AdvanceTo(k / kControlRate);
+    if (!status.ok()) result.failure = status.reason;
+    return status.ok();
+  };
+  for (long k = 0; k < ticks;) {
+    double t = k / kControlRate;
+    record(t, integrator.state());
+    if (HasFallen(genome, preset, integrator.state())) {
       result.fell = true;
       break;
     }
-    if (k == ticks) break;
-
-    integrator.SetInputs(controller.Tick(t, state));
-    if (observer) observer(t, state, controller);
-    const IntegrationStatus status = integrator.AdvanceTo((k + 1) / kControlRate);
-    if (!status.ok()) {
-      result.failure = status.reason;
-      break;
+    integrator.SetInputs(controller.Tick(t, integrator.state()));
+    if (controller.awaits_extra_step()) {
+      if (observer) observer(t, integrator.state(), controller);
+      if (!advance(++k)) break;
+      t = k / kControlRate;
+      record(t, integrator.state());
+      if (HasFallen(genome, preset, integrator.state())) {
+        result.fell = true;
+        break;
+      }
+      integrator.SetInputs(controller.FinishTick(integrator.state()));
     }
+    if (observer) observer(t, integrator.state(), controller);
+    if (!advance(++k)) break;
+  }
+  if (!result.fell && result.failure.empty()) {
+    ComputeKinematics(model, integrator.state().q, integrator.state().v, &kin);
+    result.distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
   }
   if (observer) observer(integrator.time(), integrator.state(), controller);
 

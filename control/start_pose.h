@@ -3,7 +3,8 @@
 
 #include <cmath>
 
-#include "dynamics/kinematics.h"
+#include "dynamics/contact.h"
+#include "dynamics/coords.h"
 #include "dynamics/model.h"
 
 namespace walkers {
@@ -11,7 +12,14 @@ namespace walkers {
 constexpr double kControlRate = 30.0;               // [Hz] controller ticks, zero-order hold
 constexpr double kStartKneeFlexion = M_PI / 10.0;   // [rad]
 
-// Both feet flat at x = 0, knees flexed pi/10, trunk level, at rest.
-inline State StartState(const Model& model) { return StandingState(model, kStartKneeFlexion, 0.0); }
+// Both feet welded flat at x = 0.
+Welds StartWelds(const Model& model);
+
+// The authors' start: their default state (trunk level at height L +
+// halfFootY + halfBodyY above the origin, feet flat at (0, halfFootY), knees
+// pi/10, hips and ankles 0, at rest) projected onto both foot welds at x = 0
+// and the hip welds as Simbody's project() does. The trunk is then not level
+// (docs/model.md). Throws std::runtime_error if the projection fails.
+State StartState(const Model& model);
 
 }  // namespace walkers

@@ -46,33 +46,52 @@ WalkingController::WalkingController(const Genome& genome, const Model& model, c
     : genome_(genome), model_(model), preset_(preset) {}
 
 const Inputs& WalkingController::Start(const State& state) {
+  Welds welds;
+  for (int leg = 0; leg < kNumLegs; ++leg) welds[leg] = PlantFoot(model_, state, leg);
+  return Start(welds);
+}
+
+const Inputs& WalkingController::Start(const Welds& welds) {
   state_ = WalkingState::kDoubleSupport;
   x_target_ = 0.0;
   footsteps_ = 0;
+  awaits_extra_step_ = false;
   inputs_ = Inputs{};
-  for (int leg = 0; leg < kNumLegs; ++leg) inputs_.welds[leg] = PlantFoot(model_, state, leg);
+  inputs_.welds = welds;
   return inputs_;
 }
 
 const Inputs& WalkingController::Tick(double t, const State& state) {
   Kinematics kin;
   ComputeKinematics(model_, state.q, state.v, &kin);
-  UpdateState(t, state, kin);
-  UpdateTorques(state, kin);
+  // which feet are on the floor is read before anything moves
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    on_floor_[leg] = kin.legs[leg].ankle.p.y() < genome_[kHalfFootY] + kOnFloorMargin;
+  }
+  awaits_extra_step_ = UpdateState(t, state, kin);
+  if (!awaits_extra_step_) UpdateTorques(state);
   return inputs_;
 }
 
-void WalkingController::UpdateState(double t, const State& state, const Kinematics& kin) {
-  const double x_left = kin.legs[kLeft].ankle.p.x(), x_right = kin.legs[kRight].ankle.p.x();
+const Inputs& WalkingController::FinishTick(const State& state) {
+  UpdateTorques(state);
+  awaits_extra_step_ = false;
+  return inputs_;
+}
+
+bool WalkingController::UpdateState(double t, const State& state, const Kinematics& kin) {
   if (state_ == WalkingState::kDoubleSupport) {
+    // both feet are planted: where their welds hold them (the authors' welds
+    // are exact; ours yield by micrometres, which would decide a tie)
+    const double x_left = inputs_.welds[kLeft].anchor.x(), x_right = inputs_.welds[kRight].anchor.x();
     // after the lock, once stable: the rear foot swings (the left on a tie)
-    if (t < kLockDuration || !IsStable(genome_, preset_, state)) return;
+    if (t < kLockDuration || !IsStable(genome_, preset_, state)) return false;
     const int swing = x_left <= x_right ? kLeft : kRight;
     inputs_.welds[swing].active = false;
     state_ = swing == kLeft ? WalkingState::kRightSupport : WalkingState::kLeftSupport;
     // the bunny target runs ahead of the feet
     x_target_ = 0.5 * (x_left + x_right) + kTargetLead;
-    return;
+    return false;
   }
   // single support: plant the swing foot when it is down and far enough ahead
   const int swing = SwingLeg(state_), stance = StanceLeg(state_);
@@ -83,14 +102,16 @@ void WalkingController::UpdateState(double t, const State& state, const Kinemati
     inputs_.welds[swing] = PlantFoot(model_, state, swing);
     state_ = WalkingState::kDoubleSupport;
     ++footsteps_;
+    return true;
   }
+  return false;
 }
 
-void WalkingController::UpdateTorques(const State& state, const Kinematics& kin) {
+void WalkingController::UpdateTorques(const State& state) {
   inputs_.joint_torque.setZero();
   const TrunkMotion trunk{state.q(kX), state.q(kY), state.v(kX), state.v(kY)};
   for (int leg = 0; leg < kNumLegs; ++leg) {
-    const bool on_floor = kin.legs[leg].ankle.p.y() < genome_[kHalfFootY] + kOnFloorMargin;
+    const bool on_floor = on_floor_[leg];
     const bool single = state_ != WalkingState::kDoubleSupport;
     const int hip = JointIndex(leg, kHip);
     if (single && leg == SwingLeg(state_)) {

@@ -4,6 +4,8 @@
 // It runs at 30 Hz; its torques are held between ticks.
 #pragma once
 
+#include <array>
+
 #include "control/genome.h"
 #include "control/preset.h"
 #include "control/vmc.h"
@@ -34,12 +36,23 @@ class WalkingController {
  public:
   WalkingController(const Genome& genome, const Model& model, const Preset& preset);
 
-  // Both feet planted where they stand, no torques, double support, x_d = 0.
+  // Both feet planted where they stand (or at the given welds), no torques,
+  // double support, x_d = 0.
   const Inputs& Start(const State& state);
+  const Inputs& Start(const Welds& welds);
 
   // One controller tick at time t: updates the state machine from the
-  // walker's state and returns the inputs to hold until the next tick.
+  // walker's state and returns the inputs to hold until the next tick. A
+  // tick that plants a foot holds the previous torques: the authors' loop
+  // then advances one extra tick before it sets new ones (FinishTick).
   const Inputs& Tick(double t, const State& state);
+
+  // True after a Tick that planted a foot, until FinishTick.
+  bool awaits_extra_step() const { return awaits_extra_step_; }
+
+  // The torques after the extra tick that follows a touchdown: from the state
+  // it reached, with the feet on the floor as they were at the touchdown.
+  const Inputs& FinishTick(const State& state);
 
   WalkingState state() const { return state_; }
   double x_target() const { return x_target_; }
@@ -47,8 +60,10 @@ class WalkingController {
   const Inputs& inputs() const { return inputs_; }
 
  private:
-  void UpdateState(double t, const State& state, const Kinematics& kin);
-  void UpdateTorques(const State& state, const Kinematics& kin);
+  // true when it planted a foot
+  bool UpdateState(double t, const State& state, const Kinematics& kin);
+  // the torques from the state, with the feet on the floor as at the tick's start
+  void UpdateTorques(const State& state);
 
   Genome genome_;
   Model model_;
@@ -57,6 +72,8 @@ class WalkingController {
   double x_target_ = 0.0;
   int footsteps_ = 0;
   Inputs inputs_;
+  std::array<bool, kNumLegs> on_floor_{};  // at the tick's start
+  bool awaits_extra_step_ = false;
 };
 
 }  // namespace walkers

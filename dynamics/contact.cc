@@ -1,140 +1,122 @@
 #include "dynamics/contact.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
-#include <type_traits>
+
+#include "dynamics/contact_laws.h"
 
 namespace walkers {
+
+using contact_laws::BodyMotion;
+using contact_laws::PairResult;
+using contact_laws::Wrench;
+using contact_laws::ContactBodyKinematics;
+using contact_laws::KinematicsOf;
+
+const std::array<ContactPairSpec, kNumContactPairs>& ContactPairs() {
+  using B = ContactBody;
+  using L = ContactLaw;
+  // clang-format off
+  static const std::array<ContactPairSpec, kNumContactPairs> pairs = {{
+      {"ground-trunk",  B::kGround, B::kTrunk, L::kMeshOnGround,   kLeft,  true,  false},
+      {"ground-foot_l", B::kGround, B::kFootL, L::kMeshOnGround,   kLeft,  false, false},
+      {"ground-foot_r", B::kGround, B::kFootR, L::kMeshOnGround,   kRight, false, false},
+      {"ground-knee_l", B::kGround, B::kKneeL, L::kSphereOnGround, kLeft,  false, false},
+      {"ground-knee_r", B::kGround, B::kKneeR, L::kSphereOnGround, kRight, false, false},
+      {"trunk-foot_l",  B::kTrunk,  B::kFootL, L::kMeshOnMesh,     kLeft,  true,  true},
+      {"trunk-foot_r",  B::kTrunk,  B::kFootR, L::kMeshOnMesh,     kRight, true,  true},
+      {"trunk-knee_l",  B::kTrunk,  B::kKneeL, L::kMeshOnSphere,   kLeft,  false, true},
+      {"trunk-knee_r",  B::kTrunk,  B::kKneeR, L::kMeshOnSphere,   kRight, false, true},
+      {"foot_l-knee_l", B::kFootL,  B::kKneeL, L::kMeshOnSphere,   kLeft,  false, true},
+      {"foot_r-knee_r", B::kFootR,  B::kKneeR, L::kMeshOnSphere,   kRight, false, true},
+  }};
+  // clang-format on
+  return pairs;
+}
+
 namespace {
 
-// local corner offsets of a box of half sizes (hx, hy)
-std::array<Vec2, 4> BoxCorners(double hx, double hy) {
-  return {Vec2(-hx, -hy), Vec2(hx, -hy), Vec2(hx, hy), Vec2(-hx, hy)};
+constexpr int kNumContactBodies = 6;
+
+BodyMotion<double> MotionOf(const Kinematics& kin, ContactBody body) {
+  BodyMotion<double> m;
+  const ContactBodyKinematics k = KinematicsOf(kin, body);
+  if (!k.point) return m;  // the ground stands still
+  m.p = k.point->p;
+  m.v = k.point->v;
+  m.angle = k.angle->angle;
+  m.rate = k.angle->rate;
+  return m;
 }
 
-// The 4 corners of a box of half sizes (hx, hy), turned with the box's angle
-// into world-frame offsets from its centre.
-std::array<Vec2, 4> RotatedCorners(const AngleKinematics& body, double hx, double hy) {
-  const std::array<Vec2, 4> local = BoxCorners(hx, hy);
-  return {Rotate(body, local[0]), Rotate(body, local[1]), Rotate(body, local[2]), Rotate(body, local[3])};
+bool PairEnabled(const ModelOptions& options, const ContactPairSpec& spec) {
+  return options.contact && (options.self_contact || !spec.self_contact);
 }
 
-// A leg as a type, std::integral_constant<int, leg>, so that a visitor of the
-// contact points gets ColumnsOf(leg) as a compile-time constant.
-template <int kLeg>
-using LegTag = std::integral_constant<int, kLeg>;
-
-// Visits every contact point in the order of ContactPoint (the order of the
-// sums in each entry of Q): visit(point, leg, base, body, r) for a point at
-// world offset r from the base point, turning with the body angle. `leg` is
-// the .leg of base and body, whose columns they depend on: a foot's or knee's
-// own leg, kLeft for the trunk (as ComputeKinematics sets it). ContactCarriers
-// and AddGroundContactForces share this one list of the points.
+// every enabled pair's result at the state of kin
 template <typename Visit>
-void ForEachContactCarrier(const Model& model, const Kinematics& kin, Visit&& visit) {
-  const BodyParameters& b = model.body;
-  const LegKinematics& left = kin.legs[kLeft];
-  const LegKinematics& right = kin.legs[kRight];
-  // box corners turn with their box; each box's four are computed before the
-  // visits, which may store to memory the compiler cannot tell from kin's
-  const auto trunk = RotatedCorners(kin.pitch, b.half_body_x, b.half_body_y);
-  for (int i = 0; i < 4; ++i) visit(kTrunkCorner0 + i, LegTag<kLeft>{}, kin.trunk, kin.pitch, trunk[i]);
-  const auto foot_l = RotatedCorners(left.foot, b.half_foot_x, b.half_foot_y);
-  for (int i = 0; i < 4; ++i) visit(kFootCorner0L + i, LegTag<kLeft>{}, left.ankle, left.foot, foot_l[i]);
-  const auto foot_r = RotatedCorners(right.foot, b.half_foot_x, b.half_foot_y);
-  for (int i = 0; i < 4; ++i) visit(kFootCorner0R + i, LegTag<kRight>{}, right.ankle, right.foot, foot_r[i]);
-  // a knee circle's lowest point sits straight below the knee (offset (0, -R))
-  // and moves with the femur
-  const Vec2 below_knee(0.0, -model.contact.knee_radius);
-  visit(kKneeCircleL, LegTag<kLeft>{}, left.knee, left.femur, below_knee);
-  visit(kKneeCircleR, LegTag<kRight>{}, right.knee, right.femur, below_knee);
-}
-
-// GroundForce of a point known to touch: depth > 0 (or NaN, which GroundForce
-// lets through too)
-Vec2 TouchingGroundForce(const ContactParameters& c, double depth, double depth_rate, double slip) {
-  // Hunt–Crossley: the spring grows as d^1.5, so force and stiffness start at 0
-  const double normal = c.stiffness * depth * std::sqrt(depth) * std::max(0.0, 1.0 + c.dissipation * depth_rate);
-  // regularised Coulomb plus viscous friction, opposing the slip
-  const double tangential = -normal * (c.friction * std::tanh(slip / c.slip_velocity) + c.viscous_friction * slip);
-  return Vec2(tangential, normal);
-}
-
-// force f applied at world offset r from a base point on the body of angle
-// `body`: Q += J^T f, then Q += j^T (r x f), the sums of AddTransposeProduct
-// over ColumnsOf(kLeg), zeros included (adding +0 turns a -0 of Q into +0).
-// The columns are compile-time constants, so every entry sits at a constant
-// offset (read from ColumnsOf(leg) at run time, their addresses cost more than
-// the products), and every load precedes the first store to Q, which the
-// compiler must assume could alias kin: two columns then share SSE2 operations.
-template <int kLeg>
-void ApplyForce(const PointKinematics& base, const AngleKinematics& body, const Vec2& r, const Vec2& f, Vec9* Q) {
-  static constexpr TreeColumns kCols = ColumnsOf(kLeg);
-  constexpr int N = kCols.size();
-  const double torque = r.x() * f.y() - r.y() * f.x();
-  double jx[N], jy[N], jb[N];
-  #pragma GCC unroll 6
-  for (int a = 0; a < N; ++a) {
-    jx[a] = base.J(0, kCols[a]);
-    jy[a] = base.J(1, kCols[a]);
-    jb[a] = body.j(kCols[a]);
+void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit) {
+  for (int pair = 0; pair < kNumContactPairs; ++pair) {
+    const ContactPairSpec& spec = ContactPairs()[pair];
+    if (!PairEnabled(model.options, spec)) continue;
+    visit(pair, spec,
+          contact_laws::PairContact<double>(model, pair, MotionOf(kin, spec.a), MotionOf(kin, spec.b)));
   }
-  #pragma GCC unroll 6
-  for (int a = 0; a < N; ++a) {
-    double& Qa = (*Q)(kCols[a]);
-    Qa = (Qa + (jx[a] * f.x() + jy[a] * f.y())) + jb[a] * torque;
-  }
-}
-
-// a point at offset r from the base: a box corner, or a knee circle's lowest
-// point (offset (0, -R), moving with the femur)
-ContactSample CornerSample(const PointKinematics& base, const AngleKinematics& body, const Vec2& r) {
-  ContactSample s;
-  s.p = base.p + r;
-  s.v = base.v + Vec2(-r.y(), r.x()) * body.rate;
-  s.depth = -s.p.y();
-  s.depth_rate = -s.v.y();
-  return s;
 }
 
 }  // namespace
 
-std::array<ContactCarrier, kNumContactPoints> ContactCarriers(const Model& model, const Kinematics& kin) {
-  std::array<ContactCarrier, kNumContactPoints> out;
-  ForEachContactCarrier(model, kin, [&](int point, auto /*leg*/, const PointKinematics& base,
-                                        const AngleKinematics& body, const Vec2& r) {
-    out[point] = {&base, &body, r};
+double FrictionPerSlip(const FrictionLaw& law, double slip_squared) {
+  return contact_laws::FrictionPerSlip<double>(law, slip_squared);
+}
+
+ContactReports ReportContacts(const Model& model, const Kinematics& kin) {
+  ContactReports reports{};
+  ForEachPair(model, kin, [&](int pair, const ContactPairSpec&, const PairResult<double>& r) {
+    reports[pair] = r.report;
   });
-  return out;
+  return reports;
 }
 
-Vec2 GroundForce(const ContactParameters& c, double depth, double depth_rate, double slip) {
-  if (depth <= 0.0) return Vec2::Zero();
-  return TouchingGroundForce(c, depth, depth_rate, slip);
-}
-
-std::array<ContactSample, kNumContactPoints> SampleContacts(const Model& model, const Kinematics& kin) {
-  std::array<ContactSample, kNumContactPoints> out;
-  const auto carriers = ContactCarriers(model, kin);
-  for (int i = 0; i < kNumContactPoints; ++i) {
-    out[i] = CornerSample(*carriers[i].base, *carriers[i].body, carriers[i].r);
+void AddContactForces(const Model& model, const Kinematics& kin, Vec9* Q) {
+  // each body's wrench about its reference point, then J^T F + j^T torque
+  std::array<Wrench<double>, kNumContactBodies> wrenches{};
+  ForEachPair(model, kin, [&](int, const ContactPairSpec& spec, const PairResult<double>& r) {
+    Wrench<double>& a = wrenches[static_cast<int>(spec.a)];
+    Wrench<double>& b = wrenches[static_cast<int>(spec.b)];
+    a.force += r.on_a.force;
+    a.torque += r.on_a.torque;
+    b.force += r.on_b.force;
+    b.torque += r.on_b.torque;
+  });
+  for (int i = 0; i < kNumContactBodies; ++i) {
+    const ContactBodyKinematics k = KinematicsOf(kin, static_cast<ContactBody>(i));
+    if (!k.point) continue;
+    AddTransposeProduct(*k.point, wrenches[i].force, Q);
+    AddTransposeProduct(*k.angle, wrenches[i].torque, Q);
   }
-  return out;
 }
 
-void AddGroundContactForces(const Model& model, const Kinematics& kin, Vec9* Q) {
-  // the carriers visited directly, not through ContactCarriers' array: with
-  // the leg a compile-time constant, and no pointers stored and read back
-  ForEachContactCarrier(model, kin, [&](int /*point*/, auto leg, const PointKinematics& base,
-                                        const AngleKinematics& body, const Vec2& r) {
-    assert(base.leg == leg && body.leg == leg);
-    if (base.p.y() + r.y() >= 0.0) return;  // above the ground
-    // below: s.depth = -(base.p.y() + r.y()) > 0 (or NaN)
-    const ContactSample s = CornerSample(base, body, r);
-    const Vec2 f = TouchingGroundForce(model.contact, s.depth, s.depth_rate, s.v.x());
-    ApplyForce<decltype(leg)::value>(base, body, r, f, Q);
+double MaxGroundPenetration(const Model& model, const Kinematics& kin) {
+  double deepest = 0.0;
+  const auto deepest_site = [&](const std::vector<GroundSite>& sites, const PointKinematics& p,
+                                const AngleKinematics& a) {
+    for (const GroundSite& s : sites) deepest = std::max(deepest, -(p.p.y() + Rotate(a, s.p).y()));
+  };
+  deepest_site(model.sites.trunk_ground, kin.trunk, kin.pitch);
+  for (const LegKinematics& l : kin.legs) {
+    deepest_site(model.sites.foot_ground, l.ankle, l.foot);
+    deepest = std::max(deepest, model.contact.knee_radius - l.knee.p.y());
+  }
+  return deepest;
+}
+
+bool TrunkSupported(const Model& model, const Kinematics& kin) {
+  bool supported = false;
+  ForEachPair(model, kin, [&](int, const ContactPairSpec& spec, const PairResult<double>& r) {
+    supported = supported || (spec.trunk_support && r.report.touching);
   });
+  return supported;
 }
 
 void AddWeldForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q) {
@@ -174,12 +156,7 @@ void AddJointStopTorques(const Model& model, const Vec9& q, const Vec9& v, Vec9*
 
 double ElasticEnergy(const Model& model, const Kinematics& kin, const Welds& welds) {
   double e = 0.0;
-  if (model.options.contact) {
-    // integral of k d^1.5 is 0.4 k d^2.5
-    for (const ContactSample& s : SampleContacts(model, kin)) {
-      if (s.depth > 0.0) e += 0.4 * model.contact.stiffness * std::pow(s.depth, 2.5);
-    }
-  }
+  for (const ContactReport& r : ReportContacts(model, kin)) e += r.energy;
   for (int leg = 0; leg < kNumLegs; ++leg) {
     if (!welds[leg].active) continue;
     const LegKinematics& l = kin.legs[leg];
@@ -200,20 +177,6 @@ double ElasticEnergy(const Model& model, const Kinematics& kin, const Welds& wel
     }
   }
   return e;
-}
-
-double MaxPenetration(const Model& model, const Kinematics& kin) {
-  double deepest = 0.0;
-  for (const ContactSample& s : SampleContacts(model, kin)) deepest = std::max(deepest, s.depth);
-  return deepest;
-}
-
-bool TrunkTouchesGround(const Model& model, const Kinematics& kin) {
-  const auto samples = SampleContacts(model, kin);
-  for (int i = 0; i < 4; ++i) {
-    if (samples[kTrunkCorner0 + i].depth > 0.0) return true;
-  }
-  return false;
 }
 
 }  // namespace walkers

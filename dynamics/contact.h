@@ -1,6 +1,9 @@
-// Penalty ground contact, the planted-foot weld and the joint stops
-// (MODEL.md §2–§3): each as a force kernel, its generalized forces, and its
-// stored elastic energy.
+// Contact as the authors' Simbody program computes it, in the plane
+// (MODEL.md §3 as superseded by docs/model.md "Contact"): the elastic
+// foundation of the trunk's and feet's brick meshes against the ground and
+// against each other, Hertz contact of the knee spheres with the ground, the
+// knee spheres against the meshes, Simbody's friction law; and the joint
+// stops. Each contact pair is one entry of ContactPairs().
 #pragma once
 
 #include <array>
@@ -11,37 +14,65 @@
 
 namespace walkers {
 
-// Contact points: the trunk box's 4 corners, each foot box's 4 corners, and a
-// circle at each knee.
-enum ContactPoint : int {
-  kTrunkCorner0 = 0,
-  kFootCorner0L = 4,
-  kFootCorner0R = 8,
-  kKneeCircleL = 12,
-  kKneeCircleR = 13,
-  kNumContactPoints = 14
+// The bodies that carry contact surfaces: the ground, the trunk, the feet and
+// the femurs (each carries the sphere at its knee).
+enum class ContactBody : int { kGround, kTrunk, kFootL, kFootR, kKneeL, kKneeR };
+
+// How a pair's force is computed.
+enum class ContactLaw : int {
+  kMeshOnGround,    // elastic foundation of a brick mesh on the half-space
+  kSphereOnGround,  // Hertz contact of a knee sphere with the half-space
+  kMeshOnMesh,      // elastic foundation between two brick meshes
+  kMeshOnSphere,    // elastic foundation of a brick mesh on a knee sphere
 };
 
-// What carries a contact point: a point of the tree, the body angle the
-// point turns with, and the world-frame offset from that point. A box corner
-// turns with its box; a knee circle's lowest point sits straight below the
-// knee (offset (0, -R)) and moves with the femur.
-struct ContactCarrier {
-  const PointKinematics* base;
-  const AngleKinematics* body;
-  Vec2 r;
+// Every pair of surfaces that can meet in the plane: the authors' program
+// sets no collision groups, so surfaces on different bodies collide; these
+// are the pairs whose z extents overlap (docs/model.md). Forces are reported
+// on body b; body a gets the opposite force at the same point.
+enum ContactPair : int {
+  kGroundTrunk,
+  kGroundFootL,
+  kGroundFootR,
+  kGroundKneeL,
+  kGroundKneeR,
+  kTrunkFootL,
+  kTrunkFootR,
+  kTrunkKneeL,
+  kTrunkKneeR,
+  kFootKneeL,
+  kFootKneeR,
+  kNumContactPairs
 };
-std::array<ContactCarrier, kNumContactPoints> ContactCarriers(const Model& model, const Kinematics& kin);
 
-inline bool IsKneeCircle(int contact_point) { return contact_point >= kKneeCircleL; }
-
-// Where a contact point is and how fast it goes into the ground.
-struct ContactSample {
-  Vec2 p = Vec2::Zero();  // contact point (a corner, or the circle's lowest point)
-  Vec2 v = Vec2::Zero();  // its velocity
-  double depth = 0;       // penetration into the ground, > 0 when touching [m]
-  double depth_rate = 0;  // d(depth)/dt [m/s]
+struct ContactPairSpec {
+  const char* name;
+  ContactBody a, b;
+  ContactLaw law;
+  int leg;             // the leg whose surfaces meet (kLeft for the ground and the trunk alone)
+  bool trunk_support;  // the trunk leaning on the ground or on its own feet (the gait class)
+  bool self_contact;   // between two of the walker's own bodies
 };
+const std::array<ContactPairSpec, kNumContactPairs>& ContactPairs();
+
+// What a pair does at one instant.
+struct ContactReport {
+  bool touching = false;         // some element pushes
+  Vec2 force = Vec2::Zero();     // [N] total force on body b
+  double energy = 0;             // [J] elastic energy stored
+  int elements = 0;              // springs (or Hertz contacts) pushing
+};
+using ContactReports = std::array<ContactReport, kNumContactPairs>;
+
+// Every pair's forces at the state of `kin` (the force on body b, summed).
+ContactReports ReportContacts(const Model& model, const Kinematics& kin);
+
+// Generalized forces of every enabled contact pair, added to Q.
+void AddContactForces(const Model& model, const Kinematics& kin, Vec9* Q);
+
+// Simbody's friction coefficient per unit slip speed, g(s) = mu(s) / s, as a
+// function of the squared slip speed: the friction force is -f_n g v_slip.
+double FrictionPerSlip(const FrictionLaw& law, double slip_squared);
 
 // A foot held at a planting pose by the stiff weld.
 struct Weld {
@@ -51,16 +82,7 @@ struct Weld {
 };
 using Welds = std::array<Weld, kNumLegs>;
 
-// Ground force on one contact point: (tangential, normal) [N].
-// Normal, Hunt–Crossley: k d^1.5 max(0, 1 + c d'), smooth at first touch.
-// Tangential: -F_n (mu tanh(s / s_0) + mu_v s) for slip speed s.
-Vec2 GroundForce(const ContactParameters& c, double depth, double depth_rate, double slip);
-
-// Every contact point's position, velocity and penetration.
-std::array<ContactSample, kNumContactPoints> SampleContacts(const Model& model, const Kinematics& kin);
-
-// Generalized forces of ground contact, welds and joint stops, added to Q.
-void AddGroundContactForces(const Model& model, const Kinematics& kin, Vec9* Q);
+// Generalized forces of welds and joint stops, added to Q.
 void AddWeldForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q);
 void AddJointStopTorques(const Model& model, const Vec9& q, const Vec9& v, Vec9* Q);
 
@@ -70,10 +92,10 @@ double JointStopTorque(const JointStop& stop, double angle, double rate);
 // Elastic energy stored in the contact springs, welds and joint stops [J].
 double ElasticEnergy(const Model& model, const Kinematics& kin, const Welds& welds);
 
-// Deepest penetration of any contact point [m] (0 when nothing touches).
-double MaxPenetration(const Model& model, const Kinematics& kin);
+// Deepest penetration of any surface into the ground [m] (0 when nothing touches).
+double MaxGroundPenetration(const Model& model, const Kinematics& kin);
 
-// True when a trunk corner is below the ground.
-bool TrunkTouchesGround(const Model& model, const Kinematics& kin);
+// The trunk leans on the ground or on its own feet (a pair with trunk_support touches).
+bool TrunkSupported(const Model& model, const Kinematics& kin);
 
 }  // namespace walkers

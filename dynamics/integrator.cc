@@ -154,15 +154,15 @@ bool SameWeld(const Weld& a, const Weld& b) {
 }  // namespace
 
 void Integrator::SetInputs(const Inputs& inputs) {
-  bool welds_changed = false;
+  bool welds_changed = false, weld_added = false;
   for (int leg = 0; leg < kNumLegs; ++leg) {
-    const Weld& weld = inputs.welds[leg];
-    if (SameWeld(weld, inputs_.welds[leg])) continue;
+    if (SameWeld(inputs.welds[leg], inputs_.welds[leg])) continue;
     welds_changed = true;
-    if (weld.active && settings_.project_on_plant && !ProjectOntoWeld(model_, weld, leg, &state_)) {
-      pending_failure_ = "projection onto the weld of the " + std::string(leg == kLeft ? "left" : "right") +
-                         " foot did not converge at t=" + std::to_string(t_);
-    }
+    weld_added = weld_added || inputs.welds[leg].active;
+  }
+  // as the authors' program calls project() after enabling a weld: onto every active weld
+  if (weld_added && settings_.project_on_plant && !ProjectOntoWelds(model_, inputs.welds, &state_)) {
+    pending_failure_ = "projection onto the welds did not converge at t=" + std::to_string(t_);
   }
   if (welds_changed) {
     // the state may have jumped: hand it to CVODE at the restart

@@ -54,8 +54,9 @@ struct IntegratorSettings {
   // it does not (its history still holds the old accelerations), AdvanceTo
   // restarts at the jump and tries again. Switching a weld always restarts.
   bool restart_on_torque_change = false;
-  // Switching a weld on projects the state onto it (ProjectOntoWeld): the foot
-  // lands as a plastic impact instead of being yanked by the stiff weld.
+  // Switching a weld on projects the state onto the active welds as the
+  // authors' program does (ProjectOntoWelds), instead of letting the stiff
+  // weld yank the foot into place.
   bool project_on_plant = true;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
   // (dynamics/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones

@@ -3,6 +3,10 @@
 #include <array>
 #include <cmath>
 
+#include <unsupported/Eigen/AutoDiff>
+
+#include "dynamics/contact_laws.h"
+
 namespace walkers {
 namespace {
 
@@ -75,50 +79,81 @@ void AddPointMassDerivatives(double m, double gravity, const PointKinematics& p,
   block.ScatterAdd(dG_dv, dR_dv);
 }
 
-// a contact force F(depth, depth_rate, slip) on a point: the chain rule
-// through the three contact variables, given their own derivatives
-Jac2x6 ContactForceDerivative(const Eigen::Matrix<double, 2, 3>& D, const Row6& ddepth, const Row6& drate,
-                              const Row6& dslip) {
-  return D.col(0) * ddepth + D.col(1) * drate + D.col(2) * dslip;
+// The derivative of the wrench F, torque that a contact pair puts on a body
+// about its reference point p (angle a), given their derivatives: J^T F +
+// j^T torque changes with q through the links of p and through F and torque.
+void AddWrenchDerivatives(const PointKinematics& p, const AngleKinematics& a, const Vec2& F, const Jac2x9& dF_dq,
+                          const Jac2x9& dF_dv, const Row9& dT_dq, const Row9& dT_dv, Mat9* dR_dq, Mat9* dR_dv) {
+  for (int k = 0; k < p.num_links; ++k) {
+    const PointKinematics::Link& link = p.links[k];
+    dR_dq->noalias() += (-link.r.dot(F)) * link.body->j.transpose() * link.body->j;
+  }
+  dR_dq->noalias() += p.J.transpose() * dF_dq + a.j.transpose() * dT_dq;
+  dR_dv->noalias() += p.J.transpose() * dF_dv + a.j.transpose() * dT_dv;
 }
 
-void AddGroundContactDerivatives(const Model& model, const Kinematics& kin, Mat9* dR_dq, Mat9* dR_dv) {
-  const ContactParameters& c = model.contact;
-  const auto carriers = ContactCarriers(model, kin);
-  for (int i = 0; i < kNumContactPoints; ++i) {
-    const ContactCarrier& carrier = carriers[i];
-    if (carrier.base->p.y() + carrier.r.y() >= 0.0) continue;  // above the ground
-    Mat6 dG_dq = Mat6::Zero(), dG_dv = Mat6::Zero();
-    if (!IsKneeCircle(i)) {
-      // a box corner: a material point of its box
-      const PointKinematics p = OffsetPoint(*carrier.base, *carrier.body, carrier.r);
-      const Block block(p.leg);
-      const Jac2x6 J = block.Gather(p.J), dv_dq = LocalVelocityJacobian(p, block);
-      const double depth = -p.p.y(), rate = -p.v.y(), slip = p.v.x();
-      const Eigen::Matrix<double, 2, 3> D = GroundForceDerivatives(c, depth, rate, slip);
-      const Jac2x6 dF_dq = ContactForceDerivative(D, -J.row(1), -dv_dq.row(1), dv_dq.row(0));
-      const Jac2x6 dF_dv = ContactForceDerivative(D, Row6::Zero(), -J.row(1), J.row(0));
-      AddForceDerivatives(p, block, GroundForce(c, depth, rate, slip), dF_dq, dF_dv, &dG_dq, &dG_dv);
-      block.ScatterAdd(dG_dq, dR_dq);
-      block.ScatterAdd(dG_dv, dR_dv);
-      continue;
-    }
-    // a knee circle: the force acts at the knee, and friction also turns the
-    // femur by R F_t (the offset stays vertical: it does not turn)
-    const PointKinematics& knee = *carrier.base;
-    const Block block(knee.leg);
-    const Row6 femur = block.Gather(carrier.body->j);
-    const double radius = -carrier.r.y();
-    const Jac2x6 J = block.Gather(knee.J), dv_dq = LocalVelocityJacobian(knee, block);
-    const double depth = radius - knee.p.y(), rate = -knee.v.y(), slip = knee.v.x() + radius * carrier.body->rate;
-    const Eigen::Matrix<double, 2, 3> D = GroundForceDerivatives(c, depth, rate, slip);
-    const Jac2x6 dF_dq = ContactForceDerivative(D, -J.row(1), -dv_dq.row(1), dv_dq.row(0));
-    const Jac2x6 dF_dv = ContactForceDerivative(D, Row6::Zero(), -J.row(1), J.row(0) + radius * femur);
-    AddForceDerivatives(knee, block, GroundForce(c, depth, rate, slip), dF_dq, dF_dv, &dG_dq, &dG_dv);
-    dG_dq.noalias() += radius * femur.transpose() * dF_dq.row(0);
-    dG_dv.noalias() += radius * femur.transpose() * dF_dv.row(0);
-    block.ScatterAdd(dG_dq, dR_dq);
-    block.ScatterAdd(dG_dv, dR_dv);
+// Every contact pair by forward-mode automatic differentiation of its law
+// (dynamics/contact_laws.h) with respect to the motions of its two bodies,
+// (p, angle, v, rate) of a then of b, chained with the kinematics.
+using Partials = Eigen::Matrix<double, 12, 1>;
+using AD = Eigen::AutoDiffScalar<Partials>;
+using contact_laws::BodyMotion;
+using contact_laws::ContactBodyKinematics;
+using contact_laws::KinematicsOf;
+
+// the body's motion with its six partials seeded from `first`
+BodyMotion<AD> SeededMotion(const ContactBodyKinematics& k, int first) {
+  BodyMotion<AD> m;
+  if (!k.point) {
+    m.p = contact_laws::V2<AD>(AD(0.0, Partials::Zero()), AD(0.0, Partials::Zero()));
+    m.v = m.p;
+    m.angle = AD(0.0, Partials::Zero());
+    m.rate = m.angle;
+    return m;
+  }
+  const auto seed = [&](double value, int i) { return AD(value, Partials::Unit(first + i)); };
+  m.p = contact_laws::V2<AD>(seed(k.point->p.x(), 0), seed(k.point->p.y(), 1));
+  m.angle = seed(k.angle->angle, 2);
+  m.v = contact_laws::V2<AD>(seed(k.point->v.x(), 3), seed(k.point->v.y(), 4));
+  m.rate = seed(k.angle->rate, 5);
+  return m;
+}
+
+// d(motion)/dq and d(motion)/dv of a body: (p, angle, v, rate) = (p, angle, J v, j v)
+void MotionDerivatives(const ContactBodyKinematics& k, int first, Eigen::Matrix<double, 12, kNumCoords>* dm_dq,
+                       Eigen::Matrix<double, 12, kNumCoords>* dm_dv) {
+  if (!k.point) return;
+  dm_dq->middleRows<2>(first) = k.point->J;
+  dm_dq->row(first + 2) = k.angle->j;
+  dm_dq->middleRows<2>(first + 3) = PointVelocityJacobian(*k.point);
+  dm_dv->middleRows<2>(first + 3) = k.point->J;
+  dm_dv->row(first + 5) = k.angle->j;
+}
+
+void AddContactDerivatives(const Model& model, const Kinematics& kin, Mat9* dR_dq, Mat9* dR_dv) {
+  for (int pair = 0; pair < kNumContactPairs; ++pair) {
+    const ContactPairSpec& spec = ContactPairs()[pair];
+    if (!model.options.contact || (spec.self_contact && !model.options.self_contact)) continue;
+    const ContactBodyKinematics ka = KinematicsOf(kin, spec.a), kb = KinematicsOf(kin, spec.b);
+    const contact_laws::PairResult<AD> r =
+        contact_laws::PairContact<AD>(model, pair, SeededMotion(ka, 0), SeededMotion(kb, 6));
+    if (!r.report.touching) continue;
+    Eigen::Matrix<double, 12, kNumCoords> dm_dq = Eigen::Matrix<double, 12, kNumCoords>::Zero();
+    Eigen::Matrix<double, 12, kNumCoords> dm_dv = Eigen::Matrix<double, 12, kNumCoords>::Zero();
+    MotionDerivatives(ka, 0, &dm_dq, &dm_dv);
+    MotionDerivatives(kb, 6, &dm_dq, &dm_dv);
+    const auto add = [&](const ContactBodyKinematics& k, const contact_laws::Wrench<AD>& w) {
+      if (!k.point) return;
+      Eigen::Matrix<double, 3, 12> d;
+      d.row(0) = w.force.x().derivatives().transpose();
+      d.row(1) = w.force.y().derivatives().transpose();
+      d.row(2) = w.torque.derivatives().transpose();
+      const Eigen::Matrix<double, 3, kNumCoords> d_dq = d * dm_dq, d_dv = d * dm_dv;
+      AddWrenchDerivatives(*k.point, *k.angle, Vec2(w.force.x().value(), w.force.y().value()), d_dq.topRows<2>(),
+                           d_dv.topRows<2>(), d_dq.row(2), d_dv.row(2), dR_dq, dR_dv);
+    };
+    add(ka, r.on_a);
+    add(kb, r.on_b);
   }
 }
 
@@ -167,28 +202,6 @@ Jac2x9 PointVelocityJacobian(const PointKinematics& p) {
   return dv_dq;
 }
 
-Eigen::Matrix<double, 2, 3> GroundForceDerivatives(const ContactParameters& c, double depth, double depth_rate,
-                                                   double slip) {
-  Eigen::Matrix<double, 2, 3> D = Eigen::Matrix<double, 2, 3>::Zero();
-  if (depth <= 0.0) return D;
-  const double damping = 1.0 + c.dissipation * depth_rate;
-  const double sqrt_depth = std::sqrt(depth);
-  // normal: k d^1.5 max(0, 1 + c d')
-  double dn_ddepth = 0.0, dn_drate = 0.0;
-  if (damping > 0.0) {
-    dn_ddepth = 1.5 * c.stiffness * sqrt_depth * damping;
-    dn_drate = c.stiffness * depth * sqrt_depth * c.dissipation;
-  }
-  const double normal = c.stiffness * depth * sqrt_depth * std::max(0.0, damping);
-  // tangential: -F_n phi(s), phi = mu tanh(s / s0) + mu_v s
-  const double th = std::tanh(slip / c.slip_velocity);
-  const double phi = c.friction * th + c.viscous_friction * slip;
-  const double dphi = c.friction * (1.0 - th * th) / c.slip_velocity + c.viscous_friction;
-  D << -phi * dn_ddepth, -phi * dn_drate, -normal * dphi,
-       dn_ddepth,        dn_drate,        0.0;
-  return D;
-}
-
 bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& q, const Vec9& v, Workspace* ws,
                           Mat9* da_dq, Mat9* da_dv) {
   Vec9 a;
@@ -206,7 +219,7 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
     AddPointMassDerivatives(model.ankle_mass, g, l.ankle, a, &dR_dq, &dR_dv);
   }
 
-  if (model.options.contact) AddGroundContactDerivatives(model, kin, &dR_dq, &dR_dv);
+  AddContactDerivatives(model, kin, &dR_dq, &dR_dv);
   AddWeldDerivatives(model, kin, inputs.welds, &dR_dq, &dR_dv);
   if (model.options.joint_stops) {
     for (int leg = 0; leg < kNumLegs; ++leg) {

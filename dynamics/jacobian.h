@@ -14,11 +14,6 @@ namespace walkers {
 // (d/dq, d/dv) of a point's velocity J v: d(Jv)/dq = sum_k -r_k w_k j_k.
 Jac2x9 PointVelocityJacobian(const PointKinematics& p);
 
-// Partial derivatives of GroundForce's (tangential, normal) with respect to
-// (depth, depth_rate, slip).
-Eigen::Matrix<double, 2, 3> GroundForceDerivatives(const ContactParameters& c, double depth, double depth_rate,
-                                                   double slip);
-
 // da/dq and da/dv at (q, v). Runs ForwardDynamics on the workspace first.
 // Returns false if the accelerations are not finite.
 bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& q, const Vec9& v, Workspace* ws,

@@ -4,34 +4,83 @@
 
 #include <array>
 
+#include "dynamics/contact_geometry.h"
 #include "dynamics/coords.h"
 
 namespace walkers {
 
-// The physical genes of a genome; everything else the dynamics needs is derived.
+// The physical genes of a genome; everything else the dynamics needs is
+// derived. The values of a walker come from its genome (control/genome.h
+// holds the default genome).
 struct BodyParameters {
-  double half_body_x = 0.8822120184545844;   // [m] trunk box, along x
-  double half_body_y = 0.1353015130243578;   // [m] trunk box, along y
-  double half_body_z = 0.329704208858325;    // [m] trunk box depth (mass only)
-  double half_foot_x = 0.22018185203456214;  // [m]
-  double half_foot_y = 0.05;                 // [m]
-  double half_foot_z = 0.06957592968690621;  // [m] (mass only)
-  double femur_length = 0.5301194705959408;  // [m] hip -> knee
-  double tibia_length = 0.6845846448329076;  // [m] knee -> ankle
-  double knee_mass = 0.7;                    // [kg] point mass at the femur's end
-  double ankle_mass = 0.1;                   // [kg] point mass at the tibia's end
-  double hip_mass = 0.1;                     // [kg] per hip, at the trunk's bottom centre
+  double half_body_x = 0;    // [m] trunk box, along x
+  double half_body_y = 0;    // [m] trunk box, along y
+  double half_body_z = 0;    // [m] trunk box depth (mass and contact extent)
+  double half_foot_x = 0;    // [m]
+  double half_foot_y = 0;    // [m]
+  double half_foot_z = 0;    // [m] (mass and contact extent)
+  double femur_length = 0;   // [m] hip -> knee
+  double tibia_length = 0;   // [m] knee -> ankle
+  double knee_mass = 0;      // [kg] point mass at the femur's end
+  double ankle_mass = 0;     // [kg] point mass at the tibia's end
+  double hip_mass = 0;       // [kg] per hip, at the trunk's bottom centre
 };
 
-// Penalty ground contact (MODEL.md §3). The reasons for each value are in
-// docs/model.md; tests/dynamics/contact_test.cc checks their consequences.
+// A contact material of the authors' program (Simbody's ContactMaterial).
+struct ContactMaterial {
+  double stiffness = 1.0e8;       // [Pa]
+  double dissipation = 1.0;       // [s/m] Hunt–Crossley
+  double static_friction = 0.3;   // [-]
+  double dynamic_friction = 0.3;  // [-]
+  double viscous_friction = 0.3;  // [s/m] friction coefficient per slip speed
+};
+
+// The authors' contact surfaces (MODEL.md §3). The reasons for each value are
+// in docs/model.md; tests/dynamics/contact_test.cc checks the laws.
 struct ContactParameters {
-  double stiffness = 1.0e8;        // [N/m^1.5] Hunt–Crossley k in F = k d^1.5 (1 + c d')
-  double dissipation = 1.0;        // [s/m] Hunt–Crossley c, the original's value
-  double friction = 0.3;           // [-] Coulomb coefficient (static = dynamic)
-  double viscous_friction = 0.3;   // [s/m] extra tangential force per normal force and slip speed
-  double slip_velocity = 0.01;     // [m/s] tanh regularisation of Coulomb friction
-  double knee_radius = 0.1;        // [m] contact circle at each knee
+  ContactMaterial surface;  // trunk, feet and ground
+  // the knee spheres' material was built without viscous friction
+  ContactMaterial knee{1.0e8, 1.0, 0.3, 0.3, 0.0};
+  double mesh_thickness = 0.5;        // [m] of the trunk's and feet's elastic foundation
+  int mesh_resolution = 6;            // Simbody's createBrickMesh resolution
+  double knee_radius = 0.1;           // [m] contact sphere at each knee
+  double transition_velocity = 1e-3;  // [m/s] of Simbody's friction curve
+  double leg_z = 0.25;                // [m] each leg's plane: the left at +leg_z, the right at -leg_z
+};
+
+// Simbody's friction curve for a pair of materials: mu(s) rises smoothly from
+// 0 to the static coefficient at the transition velocity, falls to the
+// dynamic one by 3 transition velocities, plus viscous * s.
+struct FrictionLaw {
+  double static_friction = 0;   // [-]
+  double dynamic_friction = 0;  // [-]
+  double viscous = 0;           // [s/m]
+  double transition = 1e-3;     // [m/s]
+};
+
+// Elastic foundation of a pair: per triangle, f = k A d (1 + c d').
+struct FoundationLaw {
+  double stiffness = 0;    // [N/m^3] k: the two surfaces' springs in series
+  double dissipation = 0;  // [s/m] c
+  double squish = 0.5;     // [-] share of the deformation the mesh takes: where the force acts
+  FrictionLaw friction;
+};
+
+// Hertz contact of a sphere with the ground: f = k x^1.5 (1 + 1.5 c x').
+struct HertzLaw {
+  double stiffness = 0;    // [N/m^1.5]
+  double dissipation = 0;  // [s/m]
+  double squish = 0.5;     // [-] share of the deformation the sphere takes: where the force acts
+  FrictionLaw friction;
+};
+
+// The laws of the four kinds of pair, combined from the materials by
+// Simbody's rules (CombineMaterials, dynamics/model.cc).
+struct ContactLaws {
+  FoundationLaw mesh_ground;
+  FoundationLaw mesh_mesh;
+  FoundationLaw mesh_knee;
+  HertzLaw knee_ground;
 };
 
 // The stiff spring-damper that holds a planted foot (MODEL.md §3).
@@ -39,6 +88,9 @@ struct WeldParameters {
   double stiffness = 1.0e9;          // [N/m] on the foot centre, x and y
   double angular_stiffness = 1.0e8;  // [N m/rad] on the foot angle
   double damping_ratio = 1.0;        // [-] of the foot alone on these springs
+  // the authors' weld holds the foot point (0, -halfFootY + depth) at ground
+  // level: a planted foot sits this deep, its contact springs preloaded
+  double depth = 0.002;              // [m]
 };
 
 // Hunt–Crossley style joint limit: tau = -k x (1 + d x') past +-limit.
@@ -52,6 +104,7 @@ struct JointStop {
 // coordinates to build closed-form pendulums.
 struct ModelOptions {
   bool contact = true;
+  bool self_contact = true;  // the pairs between the walker's own bodies
   bool joint_stops = true;
   double gravity = 9.81;  // [m/s^2] along -y
   std::array<bool, kNumCoords> locked{};  // coordinates held fixed (q'' = 0)
@@ -80,12 +133,22 @@ struct Model {
   // joint stops, per joint of a leg (kHip, kKnee, kAnkle)
   std::array<JointStop, kNumJoints> stops{};
 
+  // contact: the pairs' laws and the spring sites of every surface
+  ContactLaws laws;
+  ContactSites sites;
+
   // weld damping, derived from the foot's mass and inertia
   double weld_damping = 0;          // [N s/m]
   double weld_angular_damping = 0;  // [N m s/rad]
 
   double leg_length() const { return body.femur_length + body.tibia_length; }
 };
+
+// Simbody's rules for a pair of materials: elastic-foundation springs per
+// unit area k/h in series, Hertz stiffnesses combined as k^(2/3) in series,
+// dissipation weighted by each surface's share of the deformation, friction
+// coefficients by harmonic means (zero if either is zero).
+ContactLaws CombineMaterials(const ContactParameters& contact);
 
 // Builds the constant model from the body's sizes.
 Model BuildModel(const BodyParameters& body, const ModelOptions& options = {},

@@ -11,8 +11,8 @@ Observation Observe(const Model& model, const State& state, const Welds& welds) 
   Observation o;
   o.kinetic = KineticEnergy(model, kin);
   o.potential = PotentialEnergy(model, kin, welds);
-  o.trunk_contact = TrunkTouchesGround(model, kin);
-  o.max_penetration = MaxPenetration(model, kin);
+  o.trunk_contact = TrunkSupported(model, kin);
+  o.max_penetration = MaxGroundPenetration(model, kin);
   return o;
 }
 
@@ -21,7 +21,7 @@ Weld PlantFoot(const Model& model, const State& state, int leg) {
   ComputeKinematics(model, state.q, state.v, &kin);
   Weld w;
   w.active = true;
-  w.anchor = Vec2(kin.legs[leg].ankle.p.x(), model.body.half_foot_y);
+  w.anchor = Vec2(kin.legs[leg].ankle.p.x(), model.body.half_foot_y - model.weld.depth);
   w.angle = 0.0;
   return w;
 }

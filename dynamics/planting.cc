@@ -1,70 +1,165 @@
 #include "dynamics/planting.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
+#include <cmath>
 
-#include "dynamics/equations_of_motion.h"
+#include <Eigen/Cholesky>
+
 #include "dynamics/kinematics.h"
 
 namespace walkers {
 namespace {
 
-using Jac3x9 = Eigen::Matrix<double, 3, kNumCoords>;
+constexpr int kMaxConstraints = 12;  // two hip welds and two foot welds, three equations each
+using ConstraintVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraints, 1>;
+using ConstraintJacobian = Eigen::Matrix<double, Eigen::Dynamic, kNumFreeBodyCoords, 0, kMaxConstraints, kNumFreeBodyCoords>;
 
-// the weld's constraint error (foot centre, foot angle) and its Jacobian
-void WeldConstraint(const Model& model, const Weld& weld, int leg, const Vec9& q, Vec3* error, Jac3x9* J,
-                    Mat9* M) {
-  Kinematics kin;
-  ComputeKinematics(model, q, Vec9::Zero(), &kin);
-  const LegKinematics& l = kin.legs[leg];
-  error->head<2>() = l.ankle.p - weld.anchor;
-  (*error)(2) = l.foot.angle - weld.angle;
-  J->topRows<2>() = l.ankle.J;
-  J->row(2) = l.foot.j;
-  MassMatrix(model, kin, M);
+// up a segment of absolute angle a from its lower end: (-sin a, cos a), and its derivative
+Vec2 Up(double a) { return Vec2(-std::sin(a), std::cos(a)); }
+Vec2 UpPrime(double a) { return Vec2(-std::cos(a), -std::sin(a)); }
+
+// The errors of the hip welds and of the active foot welds, and their
+// Jacobian with respect to the free-body coordinates.
+void Constraints(const Model& model, const Welds& welds, const FreeBodyVector& z, ConstraintVector* c,
+                 ConstraintJacobian* J) {
+  const BodyParameters& b = model.body;
+  int rows = kNumLegs * 3;
+  for (const Weld& w : welds) rows += w.active ? 3 : 0;
+  c->setZero(rows);
+  J->setZero(rows, kNumFreeBodyCoords);
+  const double pitch = z(kTrunkX + 2);
+  int row = 0;
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    const int f = FootCoord(leg);
+    const int a = PinCoord(leg, kAnkle), k = PinCoord(leg, kKnee), h = PinCoord(leg, kHip);
+    const double tibia = z(f + 2) + z(a), femur = tibia + z(k);
+    // hip weld: the top of the chain from the foot at the trunk's bottom centre, turned with it
+    const Vec2 hip_chain = z.segment<2>(f) + b.tibia_length * Up(tibia) + b.femur_length * Up(femur);
+    const Vec2 hip_trunk = z.segment<2>(kTrunkX) + b.half_body_y * Vec2(std::sin(pitch), -std::cos(pitch));
+    c->segment<2>(row) = hip_chain - hip_trunk;
+    // Simbody's weld measures a turn by the sine of its angle
+    (*c)(row + 2) = std::sin(femur + z(h) - pitch);
+    const Vec2 d_tibia = b.tibia_length * UpPrime(tibia) + b.femur_length * UpPrime(femur);
+    J->block<2, 2>(row, f).setIdentity();
+    J->block<2, 1>(row, f + 2) = d_tibia;
+    J->block<2, 1>(row, a) = d_tibia;
+    J->block<2, 1>(row, k) = b.femur_length * UpPrime(femur);
+    // Simbody differentiates the weld's position error by the velocity of the
+    // trunk's material point where the chain's top is, not where its own
+    // point is: a different lever arm while the weld is open (docs/model.md)
+    J->block<2, 2>(row, kTrunkX) = -Eigen::Matrix2d::Identity();
+    J->block<2, 1>(row, kTrunkX + 2) = -Perp(hip_chain - z.segment<2>(kTrunkX));
+    const double turn = std::cos(femur + z(h) - pitch);
+    (*J)(row + 2, f + 2) = (*J)(row + 2, a) = (*J)(row + 2, k) = (*J)(row + 2, h) = turn;
+    (*J)(row + 2, kTrunkX + 2) = -turn;
+    row += 3;
+  }
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    if (!welds[leg].active) continue;
+    const int f = FootCoord(leg);
+    // the authors' weld holds the foot point (0, -halfFootY + depth) where it
+    // is when the foot's centre is at the anchor and its angle at the weld's
+    const Vec2 w(0.0, -b.half_foot_y + model.weld.depth);
+    const double angle = z(f + 2), ca = std::cos(angle), sa = std::sin(angle);
+    const double cw = std::cos(welds[leg].angle), sw = std::sin(welds[leg].angle);
+    const Vec2 point = z.segment<2>(f) + Vec2(ca * w.x() - sa * w.y(), sa * w.x() + ca * w.y());
+    const Vec2 target = welds[leg].anchor + Vec2(cw * w.x() - sw * w.y(), sw * w.x() + cw * w.y());
+    c->segment<2>(row) = point - target;
+    (*c)(row + 2) = std::sin(angle - welds[leg].angle);
+    J->block<2, 2>(row, f).setIdentity();
+    J->block<2, 1>(row, f + 2) = Perp(target - z.segment<2>(f));  // the lever arm to the ground's point, as above
+    (*J)(row + 2, f + 2) = std::cos(angle - welds[leg].angle);
+    row += 3;
+  }
 }
 
-// the mass-weighted least-norm correction M^-1 J^T (J M^-1 J^T)^-1 r; locked
-// coordinates do not move
-Vec9 WeightedCorrection(const Model& model, const Mat9& M, Jac3x9 J, const Vec3& r) {
-  Mat9 W = M;
-  for (int i = 0; i < kNumCoords; ++i) {
-    if (!model.options.locked[i]) continue;
-    J.col(i).setZero();
-    W.row(i).setZero();
-    W.col(i).setZero();
-    W(i, i) = 1.0;
-  }
-  const Eigen::LLT<Mat9> llt(W);
-  const Eigen::Matrix<double, kNumCoords, 3> Minv_Jt = llt.solve(J.transpose());
-  const Mat3 S = J * Minv_Jt;
-  return Minv_Jt * S.partialPivLu().solve(r);
+// The x of least weighted norm sum x_i^2 / w_i with J x = r:
+// W J^T (J W J^T)^-1 r, W = diag(w).
+FreeBodyVector LeastNorm(const ConstraintJacobian& J, const FreeBodyVector& w, const ConstraintVector& r, bool* ok) {
+  using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxConstraints, kMaxConstraints>;
+  const ConstraintJacobian JW = J * w.asDiagonal();
+  const Eigen::LLT<Square> llt(JW * J.transpose());
+  *ok = llt.info() == Eigen::Success;
+  return JW.transpose() * llt.solve(r);
+}
+
+// Simbody's projection of positions takes the least-norm change of its q,
+// and a free body's orientation is a unit quaternion, whose change is half
+// its angle's: so in angles, a free body's turn weighs a quarter of a pin's
+// or a translation's in the squared norm (the weights w here are the inverse).
+// Its projection of velocities takes the least-norm change of the rates,
+// all weighed alike.
+FreeBodyVector PositionWeights() {
+  FreeBodyVector w = FreeBodyVector::Ones();
+  w(kTrunkX + 2) = 4.0;
+  for (int leg = 0; leg < kNumLegs; ++leg) w(FootCoord(leg) + 2) = 4.0;
+  return w;
 }
 
 }  // namespace
 
-bool ProjectOntoWeld(const Model& model, const Weld& weld, int leg, State* state) {
-  Vec9 q = state->q;
-  Vec3 error;
-  Jac3x9 J;
-  Mat9 M;
-  // positions: Gauss-Newton on the three weld equations
+FreeBodyState ToFreeBodies(const Model& model, const State& state) {
+  Kinematics kin;
+  ComputeKinematics(model, state.q, state.v, &kin);
+  FreeBodyState s;
+  s.z.segment<3>(kTrunkX) = state.q.segment<3>(kX);
+  s.u.segment<3>(kTrunkX) = state.v.segment<3>(kX);
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    const LegKinematics& l = kin.legs[leg];
+    s.z.segment<2>(FootCoord(leg)) = l.ankle.p;
+    s.z(FootCoord(leg) + 2) = l.foot.angle;
+    s.u.segment<2>(FootCoord(leg)) = l.ankle.v;
+    s.u(FootCoord(leg) + 2) = l.foot.rate;
+    for (int joint = 0; joint < kNumJoints; ++joint) {
+      s.z(PinCoord(leg, joint)) = state.q(JointIndex(leg, joint));
+      s.u(PinCoord(leg, joint)) = state.v(JointIndex(leg, joint));
+    }
+  }
+  return s;
+}
+
+State FromFreeBodies(const FreeBodyState& s) {
+  State state;
+  state.q.segment<3>(kX) = s.z.segment<3>(kTrunkX);
+  state.v.segment<3>(kX) = s.u.segment<3>(kTrunkX);
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    for (int joint = 0; joint < kNumJoints; ++joint) {
+      state.q(JointIndex(leg, joint)) = s.z(PinCoord(leg, joint));
+      state.v(JointIndex(leg, joint)) = s.u(PinCoord(leg, joint));
+    }
+  }
+  return state;
+}
+
+bool ProjectFreeBodies(const Model& model, const Welds& welds, FreeBodyState* s) {
+  FreeBodyVector z = s->z;
+  ConstraintVector c;
+  ConstraintJacobian J;
+  // positions: Gauss-Newton, each step the least-norm one
   bool converged = false;
-  for (int iteration = 0; iteration < 20; ++iteration) {
-    WeldConstraint(model, weld, leg, q, &error, &J, &M);
-    if (error.norm() < 1e-12) {
+  for (int iteration = 0; iteration < 20 && z.allFinite(); ++iteration) {
+    Constraints(model, welds, z, &c, &J);
+    if (c.norm() < 1e-12) {
       converged = true;
       break;
     }
-    q -= WeightedCorrection(model, M, J, error);
+    bool ok = false;
+    z -= LeastNorm(J, PositionWeights(), c, &ok);
+    if (!ok) return false;
   }
-  if (!converged || !q.allFinite()) return false;
+  if (!converged) return false;
+  // velocities: the least-norm change that satisfies the welds' rates
+  bool ok = false;
+  const FreeBodyVector u = s->u - LeastNorm(J, FreeBodyVector::Ones(), J * s->u, &ok);
+  if (!ok || !u.allFinite()) return false;
+  s->z = z;
+  s->u = u;
+  return true;
+}
 
-  // velocities: the plastic impact that stops the foot
-  const Vec9 v = state->v - WeightedCorrection(model, M, J, J * state->v);
-  if (!v.allFinite()) return false;
-  state->q = q;
-  state->v = v;
+bool ProjectOntoWelds(const Model& model, const Welds& welds, State* state) {
+  FreeBodyState s = ToFreeBodies(model, *state);
+  if (!ProjectFreeBodies(model, welds, &s)) return false;
+  *state = FromFreeBodies(s);
   return true;
 }
 

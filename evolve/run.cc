@@ -157,9 +157,10 @@ json RunConfigToJson(const RunConfig& c) {
             {"absolute_tolerance_position", i.absolute_tolerance_position},
             {"absolute_tolerance_velocity", i.absolute_tolerance_velocity},
             {"max_order", i.max_order},
-            {"contact_stiffness", c.evaluation.contact.stiffness},
-            {"contact_dissipation", c.evaluation.contact.dissipation},
-            {"slip_velocity", c.evaluation.contact.slip_velocity},
+            {"contact_stiffness", c.evaluation.contact.surface.stiffness},
+            {"contact_dissipation", c.evaluation.contact.surface.dissipation},
+            {"friction_transition_velocity", c.evaluation.contact.transition_velocity},
+            {"weld_depth", c.evaluation.weld.depth},
             {"weld_stiffness", c.evaluation.weld.stiffness},
             {"weld_angular_stiffness", c.evaluation.weld.angular_stiffness}}}};
 }
@@ -181,9 +182,10 @@ RunConfig RunConfigFromJson(const json& j, const std::string& source) {
     c.evaluation.integrator.absolute_tolerance_position = e.at("absolute_tolerance_position").get<double>();
     c.evaluation.integrator.absolute_tolerance_velocity = e.at("absolute_tolerance_velocity").get<double>();
     c.evaluation.integrator.max_order = e.at("max_order").get<int>();
-    c.evaluation.contact.stiffness = e.at("contact_stiffness").get<double>();
-    c.evaluation.contact.dissipation = e.at("contact_dissipation").get<double>();
-    c.evaluation.contact.slip_velocity = e.at("slip_velocity").get<double>();
+    c.evaluation.contact.surface.stiffness = e.at("contact_stiffness").get<double>();
+    c.evaluation.contact.surface.dissipation = e.at("contact_dissipation").get<double>();
+    c.evaluation.contact.transition_velocity = e.at("friction_transition_velocity").get<double>();
+    c.evaluation.weld.depth = e.at("weld_depth").get<double>();
     c.evaluation.weld.stiffness = e.at("weld_stiffness").get<double>();
     c.evaluation.weld.angular_stiffness = e.at("weld_angular_stiffness").get<double>();
     c.Validate();

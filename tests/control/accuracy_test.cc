@@ -15,7 +15,7 @@ namespace walkers {
 namespace {
 
 std::string BenchGenome(const std::string& name) {
-  return std::string(WALKERS_SOURCE_DIR) + "/data/genomes/bench/" + name + ".json";
+  return std::string(WALKERS_SOURCE_DIR) + "/data/genomes/" + name + ".json";
 }
 
 TEST(AccuracyTest, ProductionSettingsAgreeWithHundredTimesTighterTolerances) {
@@ -27,8 +27,9 @@ TEST(AccuracyTest, ProductionSettingsAgreeWithHundredTimesTighterTolerances) {
     bool regular;  // a regular gait: every perturbed evaluation scores the same
   };
   std::vector<double> differences;
-  for (const Case& c : {Case{"performance_best_biped", true}, Case{"short_trunk_biped", true},
-                        Case{"early_long_tripod", false}, Case{"evolved_faller", false}}) {
+  for (const Case& c : {Case{"authors/archive_case3_06_13_00_02_04_2", true},
+                        Case{"authors/archive_case3_06_13_20_20_41_2", true}, Case{"default", false},
+                        Case{"bench/evolved_faller", false}}) {
     const Genome g = LoadGenome(BenchGenome(c.name));
     const FitnessEnsemble a = EvaluateEnsemble(g, OriginalPreset(), production, kEnsembleSize);
     const FitnessEnsemble b = EvaluateEnsemble(g, OriginalPreset(), tight, kEnsembleSize);
@@ -50,7 +51,7 @@ TEST(AccuracyTest, ProductionSettingsAgreeWithHundredTimesTighterTolerances) {
 // Ensembles of a short walk of a regular walker.
 class EnsembleTest : public ::testing::Test {
  protected:
-  EnsembleTest() : genome_(LoadGenome(BenchGenome("short_trunk_biped"))) { settings_.duration = 3.0; }
+  EnsembleTest() : genome_(LoadGenome(BenchGenome("authors/archive_case3_06_13_00_02_04_2"))) { settings_.duration = 3.0; }
 
   FitnessEnsemble Ensemble(int size, const EvaluationResult* unperturbed = nullptr) const {
     return EvaluateEnsemble(genome_, OriginalPreset(), settings_, size, unperturbed);

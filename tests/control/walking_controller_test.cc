@@ -121,10 +121,10 @@ TEST_F(WalkingControllerTest, TouchdownOnlyPastTheStepDistanceAndOnlyWhenDown) {
   c.Tick(2.3, landing);
   EXPECT_EQ(c.state(), WalkingState::kDoubleSupport);
   EXPECT_EQ(c.footsteps(), 1);
-  // planted where it is: centre at (x, halfFootY), flat
+  // planted where it is, flat, its centre the weld's depth below halfFootY
   EXPECT_TRUE(c.inputs().welds[kLeft].active);
   EXPECT_NEAR(c.inputs().welds[kLeft].anchor.x(), 0.02, 1e-9);
-  EXPECT_DOUBLE_EQ(c.inputs().welds[kLeft].anchor.y(), FootY());
+  EXPECT_DOUBLE_EQ(c.inputs().welds[kLeft].anchor.y(), FootY() - model_.weld.depth);
   EXPECT_DOUBLE_EQ(c.inputs().welds[kLeft].angle, 0.0);
 
   // later steps need 0.04 m: the right (now rear) foot swings next

@@ -1,50 +1,199 @@
 #include "dynamics/contact.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
+
+#include "dynamics/contact_geometry.h"
+#include "tests/dynamics/contact_poses.h"
+#include "tests/dynamics/default_walker_test.h"
 
 namespace walkers {
 namespace {
 
-const ContactParameters kContact;
+class ContactTest : public testing::DefaultWalkerTest {
+ protected:
+  ContactTest() : DefaultWalkerTest(47) {}
 
-TEST(GroundForceTest, IsZeroOffTheGroundAndGrowsSmoothlyFromFirstTouch) {
-  EXPECT_EQ(GroundForce(kContact, -1e-3, 1.0, 0.5), Vec2::Zero());
-  EXPECT_EQ(GroundForce(kContact, 0.0, 1.0, 0.5), Vec2::Zero());
-  // d^1.5: force and stiffness vanish at first touch
-  const double f1 = GroundForce(kContact, 1e-6, 0.0, 0.0).y();
-  const double f2 = GroundForce(kContact, 2e-6, 0.0, 0.0).y();
-  EXPECT_GT(f1, 0.0);
-  EXPECT_NEAR(f2 / f1, std::pow(2.0, 1.5), 1e-9);
-  EXPECT_LT(f1, 1.0);
-}
-
-TEST(GroundForceTest, DampsApproachAndNeverPulls) {
-  const double depth = 1e-3;
-  const double at_rest = GroundForce(kContact, depth, 0.0, 0.0).y();
-  EXPECT_GT(GroundForce(kContact, depth, 0.5, 0.0).y(), at_rest);   // pressing in
-  EXPECT_LT(GroundForce(kContact, depth, -0.5, 0.0).y(), at_rest);  // leaving
-  EXPECT_EQ(GroundForce(kContact, depth, -5.0, 0.0).y(), 0.0);      // leaving fast: no suction
-}
-
-TEST(GroundForceTest, FrictionOpposesSlipAndIsBoundedByCoulombPlusViscous) {
-  const double depth = 1e-3;
-  for (double slip : {-2.0, -0.1, -0.003, 0.003, 0.1, 2.0}) {
-    const Vec2 f = GroundForce(kContact, depth, 0.0, slip);
-    EXPECT_LT(f.x() * slip, 0.0) << slip;
-    EXPECT_LE(std::abs(f.x()), (kContact.friction + kContact.viscous_friction * std::abs(slip)) * f.y() + 1e-9);
+  ContactReports Reports(const Model& m, const State& s) const {
+    Kinematics kin;
+    ComputeKinematics(m, s.q, s.v, &kin);
+    return ReportContacts(m, kin);
   }
-  EXPECT_EQ(GroundForce(kContact, depth, 0.0, 0.0).x(), 0.0);
-  // sliding well above the regularisation speed: full Coulomb friction
-  const Vec2 sliding = GroundForce(kContact, depth, 0.0, 5 * kContact.slip_velocity);
-  EXPECT_GT(-sliding.x(), 0.999 * kContact.friction * sliding.y());
+  ContactReports Reports(const State& s) const { return Reports(model_, s); }
+
+};
+
+// ---- the surfaces ----
+
+TEST(BrickMeshTest, HasSimbodysFaceDivisionsAndCoversTheBox) {
+  // the default trunk: 1.76 x 0.27 x 0.66 m cut into 7 x 1 x 3 pieces
+  const Vec3 half(0.8822120184545844, 0.1353015130243578, 0.329704208858325);
+  const std::vector<MeshTriangle> triangles = BrickMeshTriangles(half, 6);
+  int bottom = 0;
+  double area = 0.0;
+  for (const MeshTriangle& t : triangles) {
+    bottom += t.centroid.y() == -half.y() ? 1 : 0;
+    area += t.area;
+    EXPECT_LE(t.centroid.cwiseAbs().maxCoeff(), half.maxCoeff() + 1e-15);
+  }
+  EXPECT_EQ(bottom, 42);  // 7 x 3 quads, two triangles each
+  EXPECT_EQ(triangles.size(), 2u * (7 * 1 + 7 * 3 + 1 * 3) * 2);
+  const double box_area = 8.0 * (half.x() * half.y() + half.x() * half.z() + half.y() * half.z());
+  EXPECT_NEAR(area, box_area, 1e-12);
 }
 
-TEST(GroundForceTest, PenetrationUnderTheWholeWalkerOnOneCornerIsUnderTwoMillimetres) {
-  // the default walker weighs about 3800 N
-  const double weight = 3805.0;
-  const double depth = std::pow(weight / kContact.stiffness, 2.0 / 3.0);
-  EXPECT_NEAR(GroundForce(kContact, depth, 0.0, 0.0).y(), weight, 1e-6 * weight);
-  EXPECT_LT(depth, 0.002);
+TEST(BrickMeshTest, TheNearestSpringsSitAThirdOfAQuadInFromTheEdges) {
+  const Vec3 half(0.8822120184545844, 0.1353015130243578, 0.329704208858325);
+  const ContactSites sites = BuildContactSites(half, Vec3(0.22, 0.05, 0.07), 0.25, 0.1, 6);
+  const double quad = 2.0 * half.x() / 7.0;
+  double outermost_bottom = 0.0, bottom_area = 0.0;
+  for (const GroundSite& s : sites.trunk_ground) {
+    if (s.p.y() != -half.y()) continue;
+    outermost_bottom = std::max(outermost_bottom, std::abs(s.p.x()));
+    bottom_area += s.area;
+  }
+  EXPECT_NEAR(outermost_bottom, half.x() - quad / 3.0, 1e-12);
+  EXPECT_NEAR(bottom_area, 4.0 * half.x() * half.z(), 1e-12);
+  // every bottom site carries the triangles of all three quads along z
+  EXPECT_EQ(sites.trunk_ground.size(), 14u + 14u + 2u * 2u + 7u * 4u);
+}
+
+// ---- the laws, combined from the materials as Simbody combines them ----
+
+TEST(ContactLawsTest, CombineTheAuthorsMaterialsBySimbodysRules) {
+  const ContactLaws laws = CombineMaterials(ContactParameters{});
+  // two surfaces of 1e8 Pa over 0.5 m in series: 1e8 N/m^3 per unit area
+  EXPECT_DOUBLE_EQ(laws.mesh_ground.stiffness, 1e8);
+  EXPECT_DOUBLE_EQ(laws.mesh_ground.dissipation, 1.0);
+  EXPECT_DOUBLE_EQ(laws.mesh_ground.squish, 0.5);
+  EXPECT_DOUBLE_EQ(laws.mesh_ground.friction.viscous, 0.3);
+  // Hertz: 4/3 sqrt(0.1) ((1e8)^(2/3) / 2)^1.5 = 1.4907e7
+  EXPECT_NEAR(laws.knee_ground.stiffness, 4.0 / 3.0 * std::sqrt(0.1) * 1e8 / std::pow(2.0, 1.5), 1e-3);
+  EXPECT_NEAR(laws.knee_ground.stiffness, 1.4907e7, 1e3);
+  // the knees' material has no viscous friction, so no pair with a knee has any
+  EXPECT_EQ(laws.knee_ground.friction.viscous, 0.0);
+  EXPECT_EQ(laws.mesh_knee.friction.viscous, 0.0);
+  EXPECT_DOUBLE_EQ(laws.mesh_knee.friction.static_friction, 0.3);
+}
+
+TEST(FrictionLawTest, RisesToStaticAtTheTransitionVelocityThenAddsViscous) {
+  const FrictionLaw law{0.3, 0.3, 0.3, 1e-3};
+  const auto mu = [&](double s) { return s * FrictionPerSlip(law, s * s); };
+  EXPECT_NEAR(mu(1e-3), 0.3 + 0.3e-3, 1e-12);
+  EXPECT_NEAR(mu(0.5e-3), 0.3 * 0.5 + 0.3 * 0.5e-3, 1e-12);  // the quintic step is 1/2 half way
+  EXPECT_NEAR(mu(2.0), 0.3 + 0.6, 1e-12);
+  EXPECT_LT(mu(1e-5), 1e-4);  // no stiction: the curve starts flat
+  double previous = 0.0;
+  for (double s = 1e-5; s < 5e-3; s += 1e-5) {
+    EXPECT_GT(mu(s), previous) << s;
+    previous = mu(s);
+  }
+  // a Stribeck drop when dynamic < static
+  const FrictionLaw stribeck{0.5, 0.3, 0.0, 1e-3};
+  EXPECT_NEAR(2e-3 * FrictionPerSlip(stribeck, 4e-6), 0.4, 1e-12);
+  EXPECT_NEAR(5e-3 * FrictionPerSlip(stribeck, 25e-6), 0.3, 1e-12);
+}
+
+// A tilted trunk pressed into the ground at rest: the force is the direct sum
+// over its triangles of 1e8 A d, at their centroids lifted by d / 2.
+TEST_F(ContactTest, ATiltedBrickOnTheGroundPushesAsTheSumOverItsTriangles) {
+  const double pitch = 0.3;
+  State s = testing::TrunkAt(0.0, pitch);
+  const BodyParameters& b = model_.body;
+  const std::vector<MeshTriangle> triangles =
+      BrickMeshTriangles(Vec3(b.half_body_x, b.half_body_y, b.half_body_z), 6);
+  // lowest corner 60 mm deep: the two nearest rows of springs, a third and two
+  // thirds of a quad in from it, sink too
+  s.q(kY) = std::sin(pitch) * b.half_body_x + std::cos(pitch) * b.half_body_y - 60e-3;
+  double force = 0.0, moment = 0.0, energy = 0.0;
+  int springs = 0;
+  for (const MeshTriangle& t : triangles) {
+    const Vec2 r(std::cos(pitch) * t.centroid.x() - std::sin(pitch) * t.centroid.y(),
+                 std::sin(pitch) * t.centroid.x() + std::cos(pitch) * t.centroid.y());
+    const double depth = -(s.q(kY) + r.y());
+    if (depth <= 0.0) continue;
+    force += 1e8 * t.area * depth;
+    moment += r.x() * 1e8 * t.area * depth;
+    energy += 0.5 * 1e8 * t.area * depth * depth;
+    ++springs;
+  }
+  ASSERT_GE(springs, 6);
+  const ContactReport r = Reports(s)[kGroundTrunk];
+  EXPECT_NEAR(r.force.y(), force, 1e-9 * force);
+  EXPECT_EQ(r.force.x(), 0.0);
+  EXPECT_NEAR(r.energy, energy, 1e-9 * energy);
+  // and the moment about the trunk centre, through the generalized force on the pitch
+  Kinematics kin;
+  ComputeKinematics(model_, s.q, s.v, &kin);
+  Vec9 Q = Vec9::Zero();
+  AddContactForces(model_, kin, &Q);
+  EXPECT_NEAR(Q(kPitch), moment, 1e-9 * std::abs(moment));
+  EXPECT_NEAR(Q(kY), force, 1e-9 * force);
+}
+
+TEST_F(ContactTest, ABrickSlidingOnTheGroundIsBrakedByFrictionAndDampedIntoIt) {
+  State s = testing::TrunkAt(model_.body.half_body_y - 1e-3, 0.0);
+  const double at_rest = Reports(s)[kGroundTrunk].force.y();
+  s.v(kY) = -0.1;  // sinking in: damped
+  EXPECT_NEAR(Reports(s)[kGroundTrunk].force.y(), 1.1 * at_rest, 1e-9 * at_rest);
+  s.v(kY) = -2.0;  // pulling out fast: no force at all
+  s.v(kY) = 2.0;
+  EXPECT_EQ(Reports(s)[kGroundTrunk].force, Vec2::Zero());
+  s.v(kY) = 0.0;
+  s.v(kX) = 0.5;  // sliding forward: mu = 0.3 + 0.3 s
+  const Vec2 f = Reports(s)[kGroundTrunk].force;
+  EXPECT_NEAR(f.x(), -(0.3 + 0.3 * 0.5) * f.y(), 1e-9 * f.y());
+}
+
+TEST_F(ContactTest, AKneeSphereOnTheGroundIsAHertzContact) {
+  State s;
+  s.q(kKneeL) = s.q(kKneeR) = 3.0;  // femurs down, tibias folded up: the knees lowest
+  Kinematics kin;
+  ComputeKinematics(model_, s.q, s.v, &kin);
+  const double depth = 1.5e-3;
+  s.q(kY) += model_.contact.knee_radius - depth - kin.legs[kLeft].knee.p.y();
+  const ContactReport r = Reports(s)[kGroundKneeL];
+  ASSERT_TRUE(r.touching);
+  EXPECT_NEAR(r.force.y(), 1.4907e7 * std::pow(depth, 1.5), 1e-4 * r.force.y());
+  EXPECT_NEAR(r.energy, 0.4 * r.force.y() * depth, 1e-9 * r.energy);
+  s.v(kY) = -0.2;  // 1.5 c x' of Hunt and Crossley
+  EXPECT_NEAR(Reports(s)[kGroundKneeL].force.y(), 1.3 * r.force.y(), 1e-9 * r.force.y());
+}
+
+// ---- the walker's own surfaces against each other ----
+
+TEST_F(ContactTest, TheTrunkRestingOnAFootPushesItDownAndNothingElse) {
+  State s = testing::TrunkAt(2.0, 0.0);
+  // the left foot folded up under the trunk's bottom, its top 1 mm in
+  testing::PlaceAnkle(model_, kLeft, Vec2(0.3, -(model_.body.half_foot_y - 1e-3)), &s);
+  const ContactReports r = Reports(s);
+  ASSERT_TRUE(r[kTrunkFootL].touching);
+  EXPECT_LT(r[kTrunkFootL].force.y(), 0.0);
+  EXPECT_NEAR(r[kTrunkFootL].force.x(), 0.0, 1e-9);
+  EXPECT_GT(r[kTrunkFootL].energy, 0.0);
+  EXPECT_FALSE(r[kTrunkFootR].touching);
+  EXPECT_FALSE(r[kGroundTrunk].touching);
+  // without self-contact the pair is gone
+  Model apart = model_;
+  apart.options.self_contact = false;
+  EXPECT_FALSE(Reports(apart, s)[kTrunkFootL].touching);
+}
+
+TEST_F(ContactTest, AKneeSwungUpIntoTheTrunkIsPushedDown) {
+  const testing::Posed p = testing::KneeInTheTrunk(model_.body, kRight, 3e-3);
+  const ContactReports r = Reports(p.model, p.state);
+  ASSERT_TRUE(r[kTrunkKneeR].touching);
+  EXPECT_LT(r[kTrunkKneeR].force.y(), 0.0);
+  EXPECT_FALSE(r[kTrunkKneeL].touching);
+}
+
+TEST_F(ContactTest, AKneeLeaningOnItsFootIsHeldUp) {
+  const testing::Posed p = testing::KneeOnItsFoot(model_.body, kLeft, 3e-3);
+  const ContactReports r = Reports(p.model, p.state);
+  ASSERT_TRUE(r[kFootKneeL].touching);
+  EXPECT_GT(r[kFootKneeL].force.y(), 0.0);
+  EXPECT_FALSE(r[kFootKneeR].touching);
 }
 
 TEST(JointStopTest, PushesBackOnlyPastTheLimit) {

@@ -116,7 +116,9 @@ TEST(IntegratorTest, PassiveDropComesToRestOnTheGroundAndNeverGainsEnergy) {
   integrator.Reset(0.0, StartState(m));
   const double e0 = TotalEnergy(m, integrator.state());
   double e_max = -1e300;
-  for (int i = 1; i <= 5000; ++i) {
+  // the collapse settles within 10 s: with Simbody's friction, which has no
+  // stiction, the limbs creep a while after the fall
+  for (int i = 1; i <= 10000; ++i) {
     ASSERT_TRUE(integrator.AdvanceTo(0.001 * i).ok());
     e_max = std::max(e_max, TotalEnergy(m, integrator.state()));
   }
@@ -127,8 +129,17 @@ TEST(IntegratorTest, PassiveDropComesToRestOnTheGroundAndNeverGainsEnergy) {
   EXPECT_TRUE(end.trunk_contact);
   EXPECT_LT(end.kinetic, 0.01);
   EXPECT_LT(integrator.state().v.head<2>().norm(), 1e-3);
+  // the ground carries the walker's weight on springs sunk by millimetres
+  Kinematics kin;
+  ComputeKinematics(m, integrator.state().q, integrator.state().v, &kin);
+  double carried = 0.0;
+  const ContactReports reports = ReportContacts(m, kin);
+  for (int pair = 0; pair < kNumContactPairs; ++pair) {
+    if (ContactPairs()[pair].a == ContactBody::kGround) carried += reports[pair].force.y();
+  }
+  EXPECT_NEAR(carried, m.total_mass * m.options.gravity, 1e-3 * m.total_mass * m.options.gravity);
   EXPECT_GT(end.max_penetration, 0.0);
-  EXPECT_LE(end.max_penetration, 0.002);
+  EXPECT_LE(end.max_penetration, 0.005);
   // and it lost most of the energy of its fall
   EXPECT_LT(end.kinetic + end.potential, 0.2 * e0);
 }
@@ -234,7 +245,7 @@ TEST(IntegratorTest, RestartsAndRetriesWhenATorqueJumpDefeatsCvodesHistory) {
   for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
   integrator.Reset(0.0, start, inputs);
   for (int tick = 0; tick < 30; ++tick) {
-    for (int i = kHipL; i < kNumCoords; ++i) inputs.joint_torque(i) = (tick % 2 ? 400.0 : -400.0) * (i % 3 + 1);
+    for (int i = kHipL; i < kNumCoords; ++i) inputs.joint_torque(i) = (tick % 2 ? 4000.0 : -4000.0) * (i % 3 + 1);
     integrator.SetInputs(inputs);
     const IntegrationStatus status = integrator.AdvanceTo((tick + 1) / kControlRate);
     ASSERT_TRUE(status.ok()) << "tick " << tick << ": " << status.reason;

@@ -103,32 +103,8 @@ TEST_F(KinematicsTest, VelocityAndBiasAccelerationMatchTimeDerivatives) {
   }
 }
 
-TEST_F(KinematicsTest, ContactPointVelocitiesMatchTimeDerivatives) {
-  const Vec9 q = RandomQ();
-  const Vec9 v = testing::RandomVector<kNumCoords>(rng_, -2.0, 2.0);
-  const auto samples = SampleContacts(model_, At(q, v));
-  for (int i = 0; i < kNumContactPoints; ++i) {
-    auto along = [&](const Eigen::Matrix<double, 1, 1>& t) -> Vec2 {
-      return SampleContacts(model_, At(q + v * t(0)))[i].p;
-    };
-    const Eigen::Matrix<double, 1, 1> t0 = Eigen::Matrix<double, 1, 1>::Zero();
-    const Vec2 numeric = NumericalJacobian<2, 1>(along, t0);
-    if (i >= kKneeCircleL) {
-      // a knee circle's lowest point is not fixed to the femur: the contact
-      // velocity is that of the femur's material point there, which adds the
-      // rolling term R w_femur along x
-      const Kinematics kin = At(q, v);
-      const double rolling = model_.contact.knee_radius * kin.legs[i - kKneeCircleL].femur.rate;
-      EXPECT_TRUE(MatricesNear(Vec2(numeric.x() + rolling, numeric.y()), samples[i].v, 1e-6)) << i;
-      continue;
-    }
-    EXPECT_TRUE(MatricesNear(numeric, samples[i].v, 1e-6)) << "contact point " << i;
-    EXPECT_NEAR(samples[i].depth, -samples[i].p.y(), 1e-15);
-  }
-}
-
 // The Jacobian-transpose products and the kinematics' own Jacobian updates
-// visit only ColumnsOf(leg): every point, angle and contact point must be
+// visit only ColumnsOf(leg): every point and angle must be
 // exactly zero outside it, and the products must equal the dense ones.
 TEST_F(KinematicsTest, JacobiansVanishOutsideTheirColumnsAndSparseProductsMatchDenseOnes) {
   auto outside = [](int leg) {
@@ -147,11 +123,6 @@ TEST_F(KinematicsTest, JacobiansVanishOutsideTheirColumnsAndSparseProductsMatchD
 
     std::vector<std::pair<std::string, PointKinematics>> points;
     for (const auto& [name, point] : AllPoints()) points.push_back({name, point(kin)});
-    const auto carriers = ContactCarriers(model_, kin);
-    for (int i = 0; i < kNumContactPoints; ++i) {
-      points.push_back({"contact point " + std::to_string(i),
-                        OffsetPoint(*carriers[i].base, *carriers[i].body, carriers[i].r)});
-    }
     for (const auto& [name, p] : points) {
       for (int c : outside(p.leg)) EXPECT_EQ(p.J.col(c), Vec2::Zero()) << name << " column " << c;
       const Vec9 start = testing::RandomVector<kNumCoords>(rng_, -10.0, 10.0);

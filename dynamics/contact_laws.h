@@ -1,0 +1,330 @@
+// The contact laws, written once for any scalar: double for the right-hand
+// side, Eigen's forward-mode AutoDiffScalar for their derivatives in the
+// Jacobian (dynamics/jacobian.cc). Internal to dynamics/.
+//
+// Each pair sees its two bodies as rigid motions of a reference point and an
+// angle, and returns the wrench it puts on each about that point. Simbody's
+// elastic foundation, in the plane: every spring site inside the other
+// surface pushes with k A d (1 + c d') along the normal from the nearest
+// point of the other surface, at the point a share `squish` of the overlap
+// back from the site, with friction f_n mu(|v_t|) against the tangential
+// slip there; a spring that would pull ("yanking") does nothing.
+#pragma once
+
+#include <cmath>
+
+#include "dynamics/contact.h"
+#include "dynamics/contact_geometry.h"
+#include "dynamics/kinematics.h"
+#include "dynamics/model.h"
+
+namespace walkers::contact_laws {
+
+template <typename S>
+using V2 = Eigen::Matrix<S, 2, 1>;
+
+// The rigid motion of a contacting body: its reference point (trunk centre,
+// ankle, knee) and absolute angle, and their rates.
+template <typename S>
+struct BodyMotion {
+  V2<S> p = V2<S>::Zero();
+  V2<S> v = V2<S>::Zero();
+  S angle = S(0);
+  S rate = S(0);
+};
+
+// Force and torque about the body's reference point.
+template <typename S>
+struct Wrench {
+  V2<S> force = V2<S>::Zero();
+  S torque = S(0);
+};
+
+template <typename S>
+struct PairResult {
+  Wrench<S> on_a, on_b;
+  ContactReport report;  // values only
+};
+
+// A contacting body's reference point and angle in the kinematics (null for the ground).
+struct ContactBodyKinematics {
+  const PointKinematics* point = nullptr;
+  const AngleKinematics* angle = nullptr;
+};
+inline ContactBodyKinematics KinematicsOf(const Kinematics& kin, ContactBody body) {
+  switch (body) {
+    case ContactBody::kTrunk:
+      return {&kin.trunk, &kin.pitch};
+    case ContactBody::kFootL:
+      return {&kin.legs[kLeft].ankle, &kin.legs[kLeft].foot};
+    case ContactBody::kFootR:
+      return {&kin.legs[kRight].ankle, &kin.legs[kRight].foot};
+    case ContactBody::kKneeL:
+      return {&kin.legs[kLeft].knee, &kin.legs[kLeft].femur};
+    case ContactBody::kKneeR:
+      return {&kin.legs[kRight].knee, &kin.legs[kRight].femur};
+    case ContactBody::kGround:
+      break;
+  }
+  return {};
+}
+
+template <typename S>
+S Cross(const V2<S>& a, const V2<S>& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+template <typename S>
+V2<S> Perp(const V2<S>& r) {
+  return V2<S>(-r.y(), r.x());
+}
+template <typename S>
+V2<S> Rotate(const S& c, const S& s, const Vec2& r) {
+  return V2<S>(c * r.x() - s * r.y(), s * r.x() + c * r.y());
+}
+template <typename S>
+V2<S> VelocityAt(const BodyMotion<S>& b, const V2<S>& point) {
+  return b.v + b.rate * Perp<S>(point - b.p);
+}
+template <typename S>
+void Push(const BodyMotion<S>& b, const V2<S>& point, const V2<S>& f, Wrench<S>* w) {
+  w->force += f;
+  w->torque += Cross<S>(point - b.p, f);
+}
+template <typename S>
+double Value(const S& x) {
+  if constexpr (std::is_same_v<S, double>) {
+    return x;
+  } else {
+    return x.value();
+  }
+}
+
+// Simbody's quintic step 10x^3 - 15x^4 + 6x^5 on [0, 1]
+template <typename S>
+S Step5(const S& x) {
+  return x * x * x * (10.0 + x * (6.0 * x - 15.0));
+}
+
+// g(s) = mu(s) / s from the squared slip speed: the friction force is
+// -f_n g v_slip. Below the transition velocity mu_dry / s is a polynomial in
+// x = s / v_t, written without the square root where it would be 0 / 0.
+template <typename S>
+S FrictionPerSlip(const FrictionLaw& law, const S& slip_squared) {
+  using std::sqrt;
+  const double vt = law.transition;
+  const S x2 = slip_squared / (vt * vt);
+  if (Value(x2) < 1e-24) return S(law.viscous) + (law.static_friction / vt) * 10.0 * x2;
+  if (Value(x2) < 1.0) {
+    // us (10 x^3 - 15 x^4 + 6 x^5) / (x vt)
+    const S x = sqrt(x2);
+    return S(law.viscous) + (law.static_friction / vt) * x2 * (10.0 + x * (6.0 * x - 15.0));
+  }
+  const S s = sqrt(slip_squared);
+  const S x = s / vt;
+  S mu_dry;
+  if (Value(x) < 3.0) {
+    // Stribeck: from static down to dynamic between 1 and 3 transition velocities
+    mu_dry = law.static_friction - (law.static_friction - law.dynamic_friction) * Step5<S>((x - 1.0) / 2.0);
+  } else {
+    mu_dry = S(law.dynamic_friction);
+  }
+  return S(law.viscous) + mu_dry / s;
+}
+
+// One elastic-foundation spring: its normal force from the overlap d, its
+// rate and the area; false if it would pull. Its elastic energy counts while
+// it overlaps, pulling or not, so that a spring that lets go only loses energy.
+template <typename S>
+bool FoundationNormal(const FoundationLaw& law, double area, const S& d, const S& d_rate, S* f_n,
+                      ContactReport* r) {
+  const S f_elastic = law.stiffness * area * d;
+  r->energy += 0.5 * Value(f_elastic) * Value(d);
+  *f_n = f_elastic * (1.0 + law.dissipation * d_rate);
+  if (!(Value(*f_n) > 0.0)) return false;
+  r->touching = true;
+  ++r->elements;
+  return true;
+}
+
+// ---- a brick mesh on the ground ----
+template <typename S>
+void MeshOnGround(const FoundationLaw& law, const std::vector<GroundSite>& sites, const Vec2& half,
+                  const BodyMotion<S>& body, Wrench<S>* w, ContactReport* r) {
+  using std::cos;
+  using std::sin;
+  // nothing below the ground: the box's lowest corner is above it
+  const double ca = std::cos(Value(body.angle)), sa = std::sin(Value(body.angle));
+  if (Value(body.p.y()) - (std::abs(sa) * half.x() + std::abs(ca) * half.y()) >= 0.0) return;
+  const S c = cos(body.angle), s = sin(body.angle);
+  for (const GroundSite& site : sites) {
+    const V2<S> r_site = Rotate<S>(c, s, site.p);
+    const S depth = -(body.p.y() + r_site.y());
+    if (Value(depth) <= 0.0) continue;
+    const V2<S> v_site = body.v + body.rate * Perp<S>(r_site);
+    S f_n;
+    if (!FoundationNormal<S>(law, site.area, depth, S(-v_site.y()), &f_n, r)) continue;
+    // the ground's normal is vertical; the force acts a share `squish` of the
+    // depth above the site, where the mesh's point slides at v_site.x - w squish d
+    const S lift = law.squish * depth;
+    const V2<S> point(body.p.x() + r_site.x(), body.p.y() + r_site.y() + lift);
+    const S slip = v_site.x() - body.rate * lift;
+    const S f_t = -f_n * FrictionPerSlip<S>(law.friction, S(slip * slip)) * slip;
+    Push<S>(body, point, V2<S>(f_t, f_n), w);
+    r->force += Vec2(Value(f_t), Value(f_n));
+  }
+}
+
+// ---- a knee sphere on the ground (Hertz) ----
+template <typename S>
+void SphereOnGround(const HertzLaw& law, double radius, const BodyMotion<S>& knee, Wrench<S>* w,
+                    ContactReport* r) {
+  using std::sqrt;
+  const S x = radius - knee.p.y();
+  if (Value(x) <= 0.0) return;
+  const S f_elastic = law.stiffness * x * sqrt(x);
+  r->energy += 0.4 * Value(f_elastic) * Value(x);
+  const S f_n = f_elastic * (1.0 + 1.5 * law.dissipation * (-knee.v.y()));
+  if (!(Value(f_n) > 0.0)) return;
+  // the force acts above the sphere's lowest point by the sphere's share of the depth
+  const V2<S> point(knee.p.x(), knee.p.y() - radius + law.squish * x);
+  const S slip = VelocityAt<S>(knee, point).x();
+  const S f_t = -f_n * FrictionPerSlip<S>(law.friction, S(slip * slip)) * slip;
+  Push<S>(knee, point, V2<S>(f_t, f_n), w);
+  r->force += Vec2(Value(f_t), Value(f_n));
+  r->touching = true;
+  ++r->elements;
+}
+
+// ---- the springs of one mesh (body m) inside another box (body o) ----
+// A site inside the other box pushes along the outward normal of the other
+// box's nearest face; where that is a z face the push is out of the plane
+// and only the friction acts in it. `scale` is the share of the patch this
+// mesh's springs carry.
+template <typename S>
+void MeshInBox(const FoundationLaw& law, double scale, const std::vector<BoxSite>& sites,
+               const BodyMotion<S>& m, const BodyMotion<S>& o, const Vec2& half_o, Wrench<S>* w_m, Wrench<S>* w_o,
+               ContactReport* r, double report_sign) {
+  using std::cos;
+  using std::sin;
+  const S cm = cos(m.angle), sm = sin(m.angle);
+  const S co = cos(o.angle), so = sin(o.angle);
+  for (const BoxSite& site : sites) {
+    const V2<S> p = m.p + Rotate<S>(cm, sm, site.p);
+    // the site in the other box's frame
+    const V2<S> d = p - o.p;
+    const V2<S> u(co * d.x() + so * d.y(), -so * d.x() + co * d.y());
+    const S e_x = half_o.x() - (Value(u.x()) < 0.0 ? S(-u.x()) : u.x());
+    const S e_y = half_o.y() - (Value(u.y()) < 0.0 ? S(-u.y()) : u.y());
+    if (Value(e_x) <= 0.0 || Value(e_y) <= 0.0) continue;
+    // the nearest face and its outward normal
+    S depth;
+    V2<S> normal = V2<S>::Zero();
+    if (site.z_margin <= Value(e_x) && site.z_margin <= Value(e_y)) {
+      depth = S(site.z_margin);
+    } else if (Value(e_x) <= Value(e_y)) {
+      depth = e_x;
+      const double sign = Value(u.x()) < 0.0 ? -1.0 : 1.0;
+      normal = V2<S>(sign * co, sign * so);
+    } else {
+      depth = e_y;
+      const double sign = Value(u.y()) < 0.0 ? -1.0 : 1.0;
+      normal = V2<S>(-sign * so, sign * co);
+    }
+    const V2<S> point = p + (law.squish * depth) * normal;
+    const V2<S> v_rel = VelocityAt<S>(o, point) - VelocityAt<S>(m, point);
+    const S d_rate = v_rel.dot(normal);
+    S f_n;
+    if (!FoundationNormal<S>(law, scale * site.area, depth, d_rate, &f_n, r)) continue;
+    const V2<S> v_t = v_rel - d_rate * normal;
+    // on the mesh: the push out of the other box and the other box's drag
+    const V2<S> f = f_n * normal + (f_n * FrictionPerSlip<S>(law.friction, S(v_t.squaredNorm()))) * v_t;
+    Push<S>(m, point, f, w_m);
+    Push<S>(o, point, V2<S>(-f), w_o);
+    r->force += report_sign * Vec2(Value(f.x()), Value(f.y()));
+  }
+}
+
+// ---- a mesh's springs (body m) inside a knee sphere (body k, centre at its reference point) ----
+template <typename S>
+void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites, double radius,
+                  const BodyMotion<S>& m, const BodyMotion<S>& k, Wrench<S>* w_m, Wrench<S>* w_k,
+                  ContactReport* r) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const S c = cos(m.angle), s = sin(m.angle);
+  const double r2 = radius * radius;
+  for (const SphereSite& site : sites) {
+    const V2<S> p = m.p + Rotate<S>(c, s, site.p);
+    const V2<S> d = p - k.p;
+    const S d3_squared = d.squaredNorm() + site.dz2;
+    if (Value(d3_squared) >= r2) continue;
+    // in 3D the normal runs from the sphere's centre through the site; its
+    // part in the plane is d / d3
+    const S d3 = sqrt(d3_squared);
+    const S depth = radius - d3;
+    const V2<S> normal = d / d3;
+    const V2<S> point = p + (law.squish * depth) * normal;
+    const V2<S> v_rel = VelocityAt<S>(k, point) - VelocityAt<S>(m, point);
+    const S d_rate = v_rel.dot(normal);
+    S f_n;
+    if (!FoundationNormal<S>(law, site.area, depth, d_rate, &f_n, r)) continue;
+    // the tangential slip in 3D: |v_t|^2 = |v_rel|^2 - d_rate^2; its part in the plane
+    const V2<S> v_t = v_rel - d_rate * normal;
+    const S slip_squared = v_rel.squaredNorm() - d_rate * d_rate;
+    const V2<S> f = f_n * normal + (f_n * FrictionPerSlip<S>(law.friction, slip_squared)) * v_t;
+    Push<S>(m, point, f, w_m);
+    Push<S>(k, point, V2<S>(-f), w_k);
+    r->force -= Vec2(Value(f.x()), Value(f.y()));  // reported on the knee
+  }
+}
+
+// The geometry a pair needs, and a quick test that its surfaces are apart.
+inline double Circumradius(const Vec2& half) { return half.norm(); }
+
+// One pair's wrenches on its bodies a and b (a's motion unused for the ground).
+template <typename S>
+PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, const BodyMotion<S>& b) {
+  PairResult<S> out;
+  const ContactPairSpec& spec = ContactPairs()[pair];
+  const BodyParameters& body = model.body;
+  const ContactSites& sites = model.sites;
+  const Vec2 half_trunk(body.half_body_x, body.half_body_y), half_foot(body.half_foot_x, body.half_foot_y);
+  const double radius = model.contact.knee_radius;
+  switch (spec.law) {
+    case ContactLaw::kMeshOnGround:
+      if (spec.b == ContactBody::kTrunk) {
+        MeshOnGround<S>(model.laws.mesh_ground, sites.trunk_ground, half_trunk, b, &out.on_b, &out.report);
+      } else {
+        MeshOnGround<S>(model.laws.mesh_ground, sites.foot_ground, half_foot, b, &out.on_b, &out.report);
+      }
+      break;
+    case ContactLaw::kSphereOnGround:
+      SphereOnGround<S>(model.laws.knee_ground, radius, b, &out.on_b, &out.report);
+      break;
+    case ContactLaw::kMeshOnMesh: {
+      // a = trunk, b = foot: apart while their circumcircles are
+      const double gap = (V2<double>(Value(a.p.x()), Value(a.p.y())) - Vec2(Value(b.p.x()), Value(b.p.y()))).norm();
+      if (gap >= Circumradius(half_trunk) + Circumradius(half_foot)) break;
+      // each mesh's springs carry half the patch (docs/model.md)
+      MeshInBox<S>(model.laws.mesh_mesh, 0.5, sites.trunk_in_foot[spec.leg], a, b, half_foot, &out.on_a, &out.on_b,
+                   &out.report, -1.0);
+      MeshInBox<S>(model.laws.mesh_mesh, 0.5, sites.foot_in_trunk[spec.leg], b, a, half_trunk, &out.on_b,
+                   &out.on_a, &out.report, 1.0);
+      break;
+    }
+    case ContactLaw::kMeshOnSphere: {
+      // a = the mesh (trunk or foot), b = the knee
+      const Vec2& half = spec.a == ContactBody::kTrunk ? half_trunk : half_foot;
+      const double gap = (V2<double>(Value(a.p.x()), Value(a.p.y())) - Vec2(Value(b.p.x()), Value(b.p.y()))).norm();
+      if (gap >= Circumradius(half) + radius) break;
+      const std::vector<SphereSite>& list =
+          spec.a == ContactBody::kTrunk ? sites.trunk_in_knee[spec.leg] : sites.foot_in_knee;
+      MeshInSphere<S>(model.laws.mesh_knee, list, radius, a, b, &out.on_a, &out.on_b, &out.report);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace walkers::contact_laws
