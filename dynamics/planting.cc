@@ -86,8 +86,6 @@ FreeBodyVector LeastNorm(const ConstraintJacobian& J, const FreeBodyVector& w, c
 // and a free body's orientation is a unit quaternion, whose change is half
 // its angle's: so in angles, a free body's turn weighs a quarter of a pin's
 // or a translation's in the squared norm (the weights w here are the inverse).
-// Its projection of velocities takes the least-norm change of the rates,
-// all weighed alike.
 FreeBodyVector PositionWeights() {
   FreeBodyVector w = FreeBodyVector::Ones();
   w(kTrunkX + 2) = 4.0;
@@ -147,9 +145,11 @@ bool ProjectFreeBodies(const Model& model, const Welds& welds, FreeBodyState* s)
     if (!ok) return false;
   }
   if (!converged) return false;
-  // velocities: the least-norm change that satisfies the welds' rates
+  // velocities: one least-squares step, each rate's change measured
+  // relative to the rate itself where that exceeds 1, sum (du_i / max(1, |u_i|))^2
+  const FreeBodyVector scale = s->u.cwiseAbs().cwiseMax(1.0);
   bool ok = false;
-  const FreeBodyVector u = s->u - LeastNorm(J, FreeBodyVector::Ones(), J * s->u, &ok);
+  const FreeBodyVector u = s->u - LeastNorm(J, scale.cwiseProduct(scale), J * s->u, &ok);
   if (!ok || !u.allFinite()) return false;
   s->z = z;
   s->u = u;

@@ -40,8 +40,9 @@ State FromFreeBodies(const FreeBodyState& s);
 
 // Simbody's project(): Gauss-Newton steps of least norm onto the hip welds
 // and the active foot welds (each holds the foot at its anchor and angle),
-// then the least-norm change of the rates that satisfies them. False (s
-// unchanged) if the positions do not converge.
+// then the change of the rates of least norm relative to the rates (each
+// measured against max(1, |u_i|)) that satisfies them. False (s unchanged)
+// if the positions do not converge.
 bool ProjectFreeBodies(const Model& model, const Welds& welds, FreeBodyState* s);
 
 // The same for our state.
