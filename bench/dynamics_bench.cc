@@ -133,7 +133,7 @@ BENCHMARK_F(PlantedWalker, ContactForces)(benchmark::State& st) {
   for (const ContactReport& r : ReportContacts(model_, workspace_.kin)) touching += r.elements;
   for (auto _ : st) {
     Vec9 Q = Vec9::Zero();
-    AddContactForces(model_, workspace_.kin, &Q);
+    AddContactForces(model_, workspace_.kin, Welds{}, &Q);
     benchmark::DoNotOptimize(Q);
   }
   st.SetItemsProcessed(st.iterations());

@@ -78,10 +78,16 @@ ContactReports ReportContacts(const Model& model, const Kinematics& kin) {
   return reports;
 }
 
-void AddContactForces(const Model& model, const Kinematics& kin, Vec9* Q) {
+bool HeldByWeld(const ContactPairSpec& pair, const Welds& welds) {
+  return pair.a == ContactBody::kGround &&
+         ((pair.b == ContactBody::kFootL && welds[kLeft].active) || (pair.b == ContactBody::kFootR && welds[kRight].active));
+}
+
+void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q) {
   // each body's wrench about its reference point, then J^T F + j^T torque
   std::array<Wrench<double>, kNumContactBodies> wrenches{};
   ForEachPair(model, kin, [&](int, const ContactPairSpec& spec, const PairResult<double>& r) {
+    if (HeldByWeld(spec, welds)) return;
     Wrench<double>& a = wrenches[static_cast<int>(spec.a)];
     Wrench<double>& b = wrenches[static_cast<int>(spec.b)];
     a.force += r.on_a.force;

@@ -55,6 +55,14 @@ struct ContactPairSpec {
 };
 const std::array<ContactPairSpec, kNumContactPairs>& ContactPairs();
 
+// A foot held at a planting pose by the stiff weld.
+struct Weld {
+  bool active = false;
+  Vec2 anchor = Vec2::Zero();  // where the foot's centre is held [m]
+  double angle = 0;            // foot angle held [rad]
+};
+using Welds = std::array<Weld, kNumLegs>;
+
 // What a pair does at one instant.
 struct ContactReport {
   bool touching = false;         // some element pushes
@@ -67,20 +75,16 @@ using ContactReports = std::array<ContactReport, kNumContactPairs>;
 // Every pair's forces at the state of `kin` (the force on body b, summed).
 ContactReports ReportContacts(const Model& model, const Kinematics& kin);
 
+// A welded foot's ground contact is not applied (docs/model.md, "Planted-foot
+// weld"): the authors' weld is exact and takes up whatever pushes the foot.
+bool HeldByWeld(const ContactPairSpec& pair, const Welds& welds);
+
 // Generalized forces of every enabled contact pair, added to Q.
-void AddContactForces(const Model& model, const Kinematics& kin, Vec9* Q);
+void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q);
 
 // Simbody's friction coefficient per unit slip speed, g(s) = mu(s) / s, as a
 // function of the squared slip speed: the friction force is -f_n g v_slip.
 double FrictionPerSlip(const FrictionLaw& law, double slip_squared);
-
-// A foot held at a planting pose by the stiff weld.
-struct Weld {
-  bool active = false;
-  Vec2 anchor = Vec2::Zero();  // where the foot's centre is held [m]
-  double angle = 0;            // foot angle held [rad]
-};
-using Welds = std::array<Weld, kNumLegs>;
 
 // Generalized forces of welds and joint stops, added to Q.
 void AddWeldForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q);

@@ -125,7 +125,7 @@ void GeneralizedForces(const Model& model, const Inputs& inputs, const Kinematic
     AddPointMassForces(model.ankle_mass, g, leg.ankle, Q);
   }
 
-  AddContactForces(model, kin, Q);
+  AddContactForces(model, kin, inputs.welds, Q);
   AddWeldForces(model, kin, inputs.welds, Q);
   if (model.options.joint_stops) AddJointStopTorques(model, q, v, Q);
 }

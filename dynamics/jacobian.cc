@@ -130,10 +130,12 @@ void MotionDerivatives(const ContactBodyKinematics& k, int first, Eigen::Matrix<
   dm_dv->row(first + 5) = k.angle->j;
 }
 
-void AddContactDerivatives(const Model& model, const Kinematics& kin, Mat9* dR_dq, Mat9* dR_dv) {
+void AddContactDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, Mat9* dR_dq,
+                           Mat9* dR_dv) {
   for (int pair = 0; pair < kNumContactPairs; ++pair) {
     const ContactPairSpec& spec = ContactPairs()[pair];
     if (!model.options.contact || (spec.self_contact && !model.options.self_contact)) continue;
+    if (HeldByWeld(spec, welds)) continue;
     const ContactBodyKinematics ka = KinematicsOf(kin, spec.a), kb = KinematicsOf(kin, spec.b);
     const contact_laws::PairResult<AD> r =
         contact_laws::PairContact<AD>(model, pair, SeededMotion(ka, 0), SeededMotion(kb, 6));
@@ -219,7 +221,7 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
     AddPointMassDerivatives(model.ankle_mass, g, l.ankle, a, &dR_dq, &dR_dv);
   }
 
-  AddContactDerivatives(model, kin, &dR_dq, &dR_dv);
+  AddContactDerivatives(model, kin, inputs.welds, &dR_dq, &dR_dv);
   AddWeldDerivatives(model, kin, inputs.welds, &dR_dq, &dR_dv);
   if (model.options.joint_stops) {
     for (int leg = 0; leg < kNumLegs; ++leg) {

@@ -127,7 +127,7 @@ TEST_F(ContactTest, ATiltedBrickOnTheGroundPushesAsTheSumOverItsTriangles) {
   Kinematics kin;
   ComputeKinematics(model_, s.q, s.v, &kin);
   Vec9 Q = Vec9::Zero();
-  AddContactForces(model_, kin, &Q);
+  AddContactForces(model_, kin, Welds{}, &Q);
   EXPECT_NEAR(Q(kPitch), moment, 1e-9 * std::abs(moment));
   EXPECT_NEAR(Q(kY), force, 1e-9 * force);
 }
