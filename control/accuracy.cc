@@ -24,6 +24,30 @@ double Median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+double Quantile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double position = p * static_cast<double>(values.size() - 1);
+  const size_t below = static_cast<size_t>(std::floor(position));
+  const size_t above = std::min(below + 1, values.size() - 1);
+  return values[below] + (position - static_cast<double>(below)) * (values[above] - values[below]);
+}
+
+AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEnsemble& tight) {
+  AccuracyVerdict v;
+  const double tight_median = tight.Median();
+  const double iqr = tight.UpperQuartile() - tight.LowerQuartile();
+  v.regular = iqr < 0.02 * std::max(1.0, std::abs(tight_median));
+  v.median_difference = RelativeFitnessDifference(production.Median(), tight_median);
+  v.fitness_agrees = v.regular ? v.median_difference < 0.01
+                               : production.Median() >= tight.LowerQuartile() &&
+                                     production.Median() <= tight.UpperQuartile();
+  const auto majority = [](int count, const FitnessEnsemble& e) { return 2 * count > static_cast<int>(e.fitness.size()); };
+  v.gait_agrees = majority(production.bipeds, production) == majority(tight.bipeds, tight);
+  v.fall_agrees = majority(production.falls, production) == majority(tight.falls, tight);
+  return v;
+}
+
 double FitnessEnsemble::Min() const {
   return fitness.empty() ? 0.0 : *std::min_element(fitness.begin(), fitness.end());
 }

@@ -21,6 +21,9 @@ double RelativeFitnessDifference(double fitness, double reference);
 
 // The median of some values; 0 if there are none.
 double Median(std::vector<double> values);
+// The p-quantile (0 <= p <= 1) by linear interpolation between order
+// statistics (numpy's default); 0 if there are no values.
+double Quantile(std::vector<double> values, double p);
 
 struct FitnessEnsemble {
   std::vector<double> fitness;  // one per member, in order of the perturbation
@@ -37,7 +40,28 @@ struct FitnessEnsemble {
   // whether the ensemble makes fitness one number: every member within
   // `tolerance` (relative) of the median
   bool Pinned(double tolerance) const { return WorstDifferenceFrom(Median()) <= tolerance; }
+  // the interquartile range of the fitnesses
+  double LowerQuartile() const { return Quantile(fitness, 0.25); }
+  double UpperQuartile() const { return Quantile(fitness, 0.75); }
 };
+
+// The accuracy criterion of docs/performance.md ("Accuracy") for one genome,
+// given its ensembles at the production settings and at 100x tighter ones:
+// a genome is regular when the tight ensemble's interquartile range is under
+// 2 % of its median; a regular genome's two medians must agree within 1 %, an
+// irregular one's production median must lie inside the tight ensemble's
+// interquartile range (the criterion also accepts a two-sample
+// Kolmogorov-Smirnov p > 0.05 instead, which scripts/accuracy.py computes);
+// and the majority's gait class and fall verdict must agree.
+struct AccuracyVerdict {
+  bool regular = false;
+  double median_difference = 0;  // RelativeFitnessDifference of the medians
+  bool fitness_agrees = false;   // regular: medians within 1 %; irregular: median inside the tight IQR
+  bool gait_agrees = false;
+  bool fall_agrees = false;
+  bool passes() const { return fitness_agrees && gait_agrees && fall_agrees; }
+};
+AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEnsemble& tight);
 
 // `size` evaluations of the genome, member k with the relative tolerance
 // scaled by 1 + 1e-4 (k - (size - 1) / 2), symmetric about the settings: for

@@ -32,14 +32,10 @@ enum class JacobianSource {
 
 struct IntegratorSettings {
   MultistepMethod method = MultistepMethod::kBdf;
-  double relative_tolerance = 1e-6;           // [-]
-  double absolute_tolerance_position = 1e-6;  // [m, rad]
-  // 1e-2 until 2026-11-22: twice as fast, but even walkers with a regular
-  // gait then scored up to 5 % more or less when the relative tolerance was
-  // scaled by 1 + 1e-4; the error moved events that read the state at the
-  // ticks, touchdowns and "stable" (joint rates against ~0.2 rad/s)
-  // (docs/performance.md, "Accuracy")
-  double absolute_tolerance_velocity = 1e-4;  // [m/s, rad/s]
+  // chosen by the accuracy criterion of docs/performance.md ("Accuracy")
+  double relative_tolerance = 1e-7;           // [-]
+  double absolute_tolerance_position = 1e-7;  // [m, rad]
+  double absolute_tolerance_velocity = 1e-5;  // [m/s, rad/s]
   int max_order = 5;                          // BDF: 1..5, Adams: 1..12
   JacobianSource jacobian = JacobianSource::kAnalytic;
   LinearSolver linear_solver = LinearSolver::kSchurBlocks;
