@@ -294,15 +294,16 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
   rules.scaffold_case = config_.scaffold_case;
 
   for (int g = completed_; g < config_.generations; ++g) {
-    // the scaffold sets this generation's ceiling from what the archive achieved so far
-    const double ceiling = scaffold_->Ceiling({g, archive_.AverageOfBest(3), initial_fitness_});
+    // the scaffold sets this generation's ceiling from what the archive
+    // achieved so far; the authors' evolver starts that measure at InitF
+    const double achieved = g == 0 ? initial_fitness_ : archive_.AverageOfBest(3);
+    const double ceiling = scaffold_->Ceiling({g, achieved, initial_fitness_});
     std::vector<Individual> children = Breed(config_.ga, {config_.seed, g, ceiling, rules}, archive_, &seen_);
 
     const auto start = std::chrono::steady_clock::now();
     EvaluateAll(&children, config_.preset, config_.evaluation, threads_);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (g == 0) initial_fitness_ = children.front().fitness();  // InitF: the default genome
     archive_.Merge(children);
 
     GenerationSummary s;

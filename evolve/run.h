@@ -99,7 +99,7 @@ class EvolutionRun {
   std::unique_ptr<Scaffold> scaffold_;
   Archive archive_;
   std::set<GenomeKey> seen_;
-  double initial_fitness_ = 0;
+  double initial_fitness_ = kAuthorsInitialFitness;
   int completed_ = 0;
 };
 

@@ -49,8 +49,11 @@ TEST(ScaffoldTest, PerformanceBasedAuthorsFormulaUnderTheOriginalPreset) {
 
 TEST(ScaffoldTest, PerformanceBasedWaitsForProgressToMeasure) {
   for (const Preset& preset : {PaperPreset(), OriginalPreset()}) {
-    EXPECT_DOUBLE_EQ(Ceiling(ScaffoldCase::kPerformance, preset, 0, 0.0, 0.0), 0.9);   // generation 0: no InitF yet
     EXPECT_DOUBLE_EQ(Ceiling(ScaffoldCase::kPerformance, preset, 5, -1.0, 4.0), 0.9);  // nothing walks yet
+    EXPECT_DOUBLE_EQ(Ceiling(ScaffoldCase::kPerformance, preset, 5, 4.0, 0.0), 0.9);   // no InitF
+    // the run starts the measure at InitF, as the authors' evolver did: 0.7 for generation 0
+    const double init_f = kAuthorsInitialFitness;
+    EXPECT_NEAR(Ceiling(ScaffoldCase::kPerformance, preset, 0, init_f, init_f), 0.7, 1e-15);
   }
 }
 
