@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages this project needs, when they are missing.
 # Run as root (or with sudo available). Nothing is downloaded at build or run time.
-#   setup.sh          what building and running need
-#   setup.sh --test   and what the tests need: Chromium, to check the replay page
+#   setup.sh            what building and running need
+#   setup.sh --test     and what the tests need: Chromium, to check the replay page
+#   setup.sh --authors  and what building the authors' program for scripts/compare_authors.py needs
 set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsundials-dev libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
-  python3 python3-matplotlib
+  python3 python3-matplotlib python3-scipy
 )
-if [ "${1:-}" = "--test" ]; then
-  packages+=(chromium)
-fi
+case "${1:-}" in
+  --test) packages+=(chromium) ;;
+  --authors) packages+=(libsimbody-dev libarmadillo-dev) ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

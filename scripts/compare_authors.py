@@ -1,0 +1,336 @@
+#!/usr/bin/python3
+"""Compare this simulator with the authors' own Simbody program, genome by genome.
+
+The authors' repository (github.com/jhuizhu/bipedalism-scaffolded-learning) is not part of
+this project: the user provides a checkout of it. This script builds their walker program
+from that checkout into a build folder outside this repository (against Debian's
+libsimbody-dev and libarmadillo-dev), runs it and `walkers evaluate --ensemble N` on a
+folder of genome files, and prints both side by side with the summary statistics of
+docs/fidelity.md.
+
+  compare_authors.py extract --authors REPO --out DIR [--top 4]
+      genome files of the top N of every run's final archive in REPO/CaseData
+  compare_authors.py run --authors REPO --genomes DIR [--ensemble 25] [--jobs 2] [--json OUT] [--markdown OUT]
+      build their program if needed, evaluate every genome in both, print the table
+      (--authors-binary PROGRAM instead of --authors: their program, already built)
+
+Their program reads its genes as 32-bit floats from the command line, as their evolver gave
+them (Python 2's str(), 12 significant digits); we pass them the same way.
+"""
+
+import argparse
+import ast
+import concurrent.futures
+import csv
+import json
+import math
+import os
+import pathlib
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent
+
+# Our gene names (genome files) and the authors' (their evolver's dictionaries), in the order
+# of their program's command line.
+AUTHORS_ARGUMENTS = [
+    ("halfBodyX", "halfBodyX"),
+    ("halfBodyY", "halfBodyY"),
+    ("halfBodyZ", "halfBodyZ"),
+    ("halfFootX", "halfFootBodyX"),
+    ("halfFootY", "halfFootBodyY"),
+    ("halfFootZ", "halfFootBodyZ"),
+    ("kx", "k1"),
+    ("ky", "k2"),
+    ("lambdaX", "lambda1"),
+    ("lambdaY", "lambda2"),
+    ("kTheta", "bodyStraightK"),
+    ("lambdaTheta", "bodyStraightL"),
+    ("kneeMass", "kneeMass"),
+    ("ankleMass", "ankleMass"),
+    ("hipMass", "hipMass"),
+    ("kStep", "stepK"),
+    ("stableTolerance", "stableTolerance"),
+    ("tibiaLength", "tibiaLength"),
+    ("femurLength", "femurLength"),
+    ("standOffset", "standOffset"),
+    ("stepOffset", "stepOffset"),
+]
+OURS_FROM_AUTHORS = {theirs: ours for ours, theirs in AUTHORS_ARGUMENTS}
+
+# Their evolver killed an evaluation after 25 s of wall time (fitness -124); we wait
+# for their fitness, whatever it takes on this machine.
+AUTHORS_TIMEOUT_S = 300.0
+# Their program's fitness for a fall or a Simbody exception.
+AUTHORS_FALL = -1.0
+CASES = {"case1": "free", "case2": "time", "case3": "performance"}
+
+
+class ToolError(Exception):
+    pass
+
+
+# ---- genome files from the authors' run data ----
+
+def final_archive(summary_path):
+    """The last 'all time fittest' archive their evolver wrote: [(genes, fitness), ...]."""
+    text = pathlib.Path(summary_path).read_text()
+    start = text.rfind("[[{")
+    end = text.rfind("]]")
+    if start < 0 or end < start:
+        raise ToolError(f"{summary_path}: no final archive (a list of [genes, fitness]) found")
+    archive = ast.literal_eval(text[start:end + 2])
+    return [(genes, float(fitness)) for genes, fitness in archive]
+
+
+def genome_from_authors(genes, source):
+    try:
+        return {ours: float(genes[theirs]) for ours, theirs in AUTHORS_ARGUMENTS}
+    except KeyError as e:
+        raise ToolError(f"{source}: gene {e} missing") from None
+
+
+def extract(args):
+    case_data = pathlib.Path(args.authors) / "CaseData"
+    summaries = sorted(case_data.glob("case*/summarisedOutput-*"))
+    if not summaries:
+        raise ToolError(f"{case_data}: no case*/summarisedOutput-* files (is --authors their repository?)")
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    origins = ["file,case,run,rank,authors_recorded_fitness"]
+    written = []
+    for summary in summaries:
+        case = summary.parent.name
+        run = summary.name.split("-", 1)[1]
+        for rank, (genes, fitness) in enumerate(final_archive(summary)[: args.top]):
+            genome = genome_from_authors(genes, f"{summary} entry {rank}")
+            path = out / f"archive_{case}_{run}_{rank}.json"
+            if path.exists() and not args.force:
+                raise ToolError(f"{path} exists (use --force to replace it)")
+            written.append((path, json.dumps(genome, indent=2) + "\n"))
+            origins.append(f"{path.name},{CASES.get(case, case)},{run},{rank},{fitness!r}")
+    origin = out / "origin.csv"
+    if origin.exists() and not args.force:
+        raise ToolError(f"{origin} exists (use --force to replace it)")
+    for path, text in written:
+        path.write_text(text)
+    origin.write_text("\n".join(origins) + "\n")
+    print(f"wrote {len(written)} genome files and origin.csv to {out}")
+
+
+# ---- the authors' program ----
+
+# As the authors built it: no build type, so no optimisation and no NDEBUG.
+# Both matter: Debian's Simbody headers change a structure's layout under
+# NDEBUG, and at -O2 GCC 12 evaluates the program's float half-sizes in
+# double precision in places, which changes its results.
+BUILD_CMAKE = """cmake_minimum_required(VERSION 3.13)
+project(authors_walker CXX)
+find_package(Simbody REQUIRED)
+add_executable(walker "{source}")
+target_include_directories(walker PRIVATE ${{Simbody_INCLUDE_DIR}})
+target_link_libraries(walker ${{Simbody_LIBRARIES}} armadillo)
+"""
+
+
+def build_authors(authors, build_dir):
+    build_dir = pathlib.Path(build_dir).resolve()
+    if ROOT in build_dir.parents or build_dir == ROOT:
+        raise ToolError(f"--build-dir {build_dir} is inside this repository; their program is built outside it")
+    source = pathlib.Path(authors).resolve() / "simbody" / "twoLegVar" / "walker.cpp"
+    if not source.is_file():
+        raise ToolError(f"{source}: not found (is --authors a checkout of their repository?)")
+    binary = build_dir / "build" / "walker"
+    if binary.exists() and binary.stat().st_mtime >= source.stat().st_mtime:
+        return binary
+    for tool in ("cmake", "c++"):
+        if shutil.which(tool) is None:
+            raise ToolError(f"{tool} not found: run scripts/setup.sh --authors first")
+    build_dir.mkdir(parents=True, exist_ok=True)
+    (build_dir / "CMakeLists.txt").write_text(BUILD_CMAKE.format(source=source.as_posix()))
+    log = build_dir / "build.log"
+    with open(log, "w") as f:
+        ok = (subprocess.run(["cmake", "-S", str(build_dir), "-B", str(build_dir / "build"),
+                              "-DCMAKE_BUILD_TYPE="], stdout=f, stderr=f).returncode == 0
+              and subprocess.run(["cmake", "--build", str(build_dir / "build")], stdout=f,
+                                 stderr=f).returncode == 0)
+    if not ok:
+        raise ToolError(f"building their program failed (libsimbody-dev and libarmadillo-dev installed? "
+                        f"scripts/setup.sh --authors installs them); see {log}")
+    return binary
+
+
+def authors_arguments(genome):
+    # Python 2's str() of a float: 12 significant digits
+    return ["%.12g" % genome[ours] for ours, _ in AUTHORS_ARGUMENTS]
+
+
+def run_authors(binary, genome):
+    """Their fitness, or None with a reason."""
+    try:
+        p = subprocess.run([str(binary)] + authors_arguments(genome), capture_output=True, text=True,
+                           timeout=AUTHORS_TIMEOUT_S)
+    except subprocess.TimeoutExpired:
+        return None, "timeout"
+    if p.returncode != 0:
+        return AUTHORS_FALL, "fell" if p.returncode == 254 else f"exit {p.returncode}"
+    try:
+        return float(p.stdout.strip().split()[-1]), ""
+    except (ValueError, IndexError):
+        return None, f"unreadable output {p.stdout!r}"
+
+
+# ---- ours ----
+
+def run_ours(walkers, genome_path, ensemble, preset):
+    p = subprocess.run([str(walkers), "evaluate", "--genome", str(genome_path), "--ensemble", str(ensemble),
+                        "--preset", preset, "--json"], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise ToolError(f"walkers evaluate on {genome_path} failed: {p.stderr.strip()}")
+    return json.loads(p.stdout)
+
+
+# ---- statistics ----
+
+def spearman(xs, ys):
+    from scipy import stats  # python3-scipy, installed by scripts/setup.sh
+    return float(stats.spearmanr(xs, ys).statistic)
+
+
+def summarise(rows):
+    both = [r for r in rows if r["authors"] is not None]
+    ratios = [r["ours_median"] / r["authors"] for r in both if r["authors"] > 0]
+    tripods = [r for r in both if r["ours_tripods"] * 2 > r["ensemble"]]
+    return {
+        "genomes": len(rows),
+        "compared": len(both),
+        "spearman": spearman([r["authors"] for r in both], [r["ours_median"] for r in both]) if len(both) > 2 else None,
+        "median_ratio": statistics.median(ratios) if ratios else None,
+        "median_abs_difference": statistics.median(abs(r["ours_median"] - r["authors"]) for r in both) if both else None,
+        "tripods": len(tripods),
+    }
+
+
+def recorded_fitness(genome_dir):
+    """What the authors' evolver recorded for each genome, from the folder's origin.csv if any."""
+    origin = pathlib.Path(genome_dir) / "origin.csv"
+    if not origin.is_file():
+        return {}
+    with open(origin) as f:
+        return {r["file"][:-5]: float(r["authors_recorded_fitness"]) for r in csv.DictReader(f)}
+
+
+def markdown_table(rows, recorded):
+    lines = ["| genome | recorded by their runs | theirs | ours: median [min, max] | ours / theirs | gait (ours) |",
+             "|---|---|---|---|---|---|"]
+    notes = {"timeout": f"> {AUTHORS_TIMEOUT_S:.0f} s", "exit 255": "fails (−1)"}
+    for r in rows:
+        theirs = notes.get(r["authors_note"], "—" if r["authors"] is None else f"{r['authors']:.2f}")
+        ratio = f"{r['ours_median'] / r['authors']:.2f}" if r["authors"] and r["authors"] > 0 else "—"
+        rec = f"{recorded[r['genome']]:.2f}" if r["genome"] in recorded else "—"
+        gait = "tripod" if 2 * r["ours_tripods"] > r["ensemble"] else "biped"
+        lines.append(f"| `{r['genome']}` | {rec} | {theirs} | {r['ours_median']:.2f} [{r['ours_min']:.2f}, "
+                     f"{r['ours_max']:.2f}] | {ratio} | {gait} |")
+    return "\n".join(lines) + "\n"
+
+
+def write_new(path, text, force):
+    path = pathlib.Path(path)
+    if path.exists() and not force:
+        raise ToolError(f"{path} exists (use --force to replace it)")
+    path.write_text(text)
+
+
+def run(args):
+    genomes = sorted(pathlib.Path(args.genomes).glob("*.json"))
+    if not genomes:
+        raise ToolError(f"{args.genomes}: no genome files (*.json)")
+    walkers = pathlib.Path(args.walkers)
+    if not walkers.is_file():
+        raise ToolError(f"{walkers}: not found (build the project first: scripts/build.sh)")
+    if args.authors_binary:
+        binary = pathlib.Path(args.authors_binary)
+        if not binary.is_file():
+            raise ToolError(f"--authors-binary {binary}: not found")
+    else:
+        if not args.authors:
+            raise ToolError("give --authors (a checkout of their repository) or --authors-binary")
+        binary = build_authors(args.authors, args.build_dir)
+
+    def one(path):
+        genome = json.loads(path.read_text())
+        authors, note = run_authors(binary, genome)
+        ours = run_ours(walkers, path, args.ensemble, args.preset)
+        e = ours["ensemble"]
+        return {
+            "genome": path.stem,
+            "authors": authors,
+            "authors_note": note,
+            "ours": ours["fitness"],
+            "ours_median": e["fitness_median"],
+            "ours_min": e["fitness_min"],
+            "ours_max": e["fitness_max"],
+            "ours_tripods": e["size"] - e["bipeds"],
+            "ours_falls": e["falls"],
+            "ensemble": e["size"],
+            "ours_ms": ours["wall_ms"],
+        }
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        rows = list(pool.map(one, genomes))
+
+    name_width = max(len(r["genome"]) for r in rows)
+    print(f"{'genome':<{name_width}}  {'theirs':>7}  {'ours':>7}  {'ratio':>6}  {'min':>6}  {'max':>6}  "
+          f"{'tripod':>6}  {'fell':>4}")
+    for r in rows:
+        theirs = "—" if r["authors"] is None else f"{r['authors']:.2f}"
+        ratio = f"{r['ours_median'] / r['authors']:.2f}" if r["authors"] and r["authors"] > 0 else "—"
+        print(f"{r['genome']:<{name_width}}  {theirs:>7}  {r['ours_median']:>7.2f}  {ratio:>6}  "
+              f"{r['ours_min']:>6.2f}  {r['ours_max']:>6.2f}  {r['ours_tripods']:>3}/{r['ensemble']:<2}  "
+              f"{r['ours_falls']:>4}  {r['authors_note']}")
+    s = summarise(rows)
+    fmt = lambda v: "—" if v is None else f"{v:.3f}"
+    print(f"\n{s['compared']} of {s['genomes']} compared: Spearman {fmt(s['spearman'])}, median ratio ours/theirs "
+          f"{fmt(s['median_ratio'])}, median |ours - theirs| {fmt(s['median_abs_difference'])}, "
+          f"{s['tripods']} classed tripods (ensemble majority)")
+    if args.markdown:
+        write_new(args.markdown, markdown_table(rows, recorded_fitness(args.genomes)), args.force)
+    if args.json:
+        write_new(args.json, json.dumps({"summary": s, "rows": rows, "ensemble": args.ensemble,
+                                         "preset": args.preset}, indent=1) + "\n", args.force)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    e = sub.add_parser("extract", help="genome files from their run data")
+    e.add_argument("--authors", required=True, help="a checkout of their repository")
+    e.add_argument("--out", required=True)
+    e.add_argument("--top", type=int, default=4, help="the N fittest of each run's final archive")
+    e.add_argument("--force", action="store_true")
+    r = sub.add_parser("run", help="evaluate a folder of genomes in both programs")
+    r.add_argument("--authors", help="a checkout of their repository (their program is built from it)")
+    r.add_argument("--authors-binary", help="their program, already built (instead of --authors)")
+    r.add_argument("--genomes", required=True)
+    r.add_argument("--build-dir", default=os.path.expanduser("~/.cache/walkers/authors-build"))
+    r.add_argument("--walkers", default=str(ROOT / "build" / "app" / "walkers"))
+    r.add_argument("--ensemble", type=int, default=25)
+    r.add_argument("--preset", default="original")
+    r.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    r.add_argument("--json", help="write every row and the summary here")
+    r.add_argument("--markdown", help="write the table here, as docs/fidelity.md shows it")
+    r.add_argument("--force", action="store_true")
+    args = parser.parse_args()
+    try:
+        {"extract": extract, "run": run}[args.command](args)
+    except ToolError as err:
+        print(f"compare_authors: {err}", file=sys.stderr)
+        sys.exit(2)
+
+
+if __name__ == "__main__":
+    main()
