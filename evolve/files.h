@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <string>
 
+#include "control/input_file.h"   // ReadFile
+#include "control/number_text.h"  // FormatExact
+
 namespace walkers {
 
 // Replaces `path` by `content` atomically: a reader (or a resumed run) sees
@@ -21,9 +24,5 @@ std::uint64_t AppendDurably(const std::string& path, const std::string& content)
 void TruncateFile(const std::string& path, std::uint64_t size);
 
 std::uint64_t FileSize(const std::string& path);
-std::string ReadFile(const std::string& path);
-
-// The shortest decimal text that reads back as exactly x.
-std::string FormatExact(double x);
 
 }  // namespace walkers
