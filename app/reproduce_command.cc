@@ -58,7 +58,9 @@ int RunReproduce(const ReproduceOptions& opt) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     progress->Report(s, elapsed / generations_done * generations_left);
   };
-  const ReproductionSummary summary = Reproduce(config, opt.out, opt.resume, threads, observer);
+  // the directory stays locked until the figures are drawn
+  Reproduction reproduction(config, opt.out, opt.resume ? StartMode::kResume : StartMode::kNew);
+  const ReproductionSummary summary = reproduction.Run(threads, observer);
   if (progress) progress->Finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

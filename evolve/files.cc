@@ -120,9 +120,12 @@ void WriteFileAtomically(const std::string& path, const std::string& content) {
   CommitTemporary(fd, tmp, path);
 }
 
-AtomicFileWriter::AtomicFileWriter(const std::string& path)
-    : path_(path), temporary_(TemporaryPathFor(path)), out_(temporary_, std::ios::binary | std::ios::trunc) {
-  if (!out_) throw std::runtime_error(path_ + ": cannot write (" + std::strerror(errno) + ")");
+AtomicFileWriter::AtomicFileWriter(const std::string& path, const std::string& what)
+    : path_(path),
+      what_(what),
+      temporary_(TemporaryPathFor(path)),
+      out_(temporary_, std::ios::binary | std::ios::trunc) {
+  if (!out_) throw std::runtime_error(path_ + ": cannot write " + what_ + " (" + std::strerror(errno) + ")");
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
@@ -136,7 +139,7 @@ void AtomicFileWriter::Commit() {
   if (!out_) {
     ::unlink(temporary_.c_str());
     committed_ = true;  // nothing left to remove
-    throw std::runtime_error(path_ + ": writing failed (" + std::strerror(errno) + ")");
+    throw std::runtime_error(path_ + ": writing " + what_ + " failed (" + std::strerror(errno) + ")");
   }
   committed_ = true;
   const int fd = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);

@@ -29,8 +29,9 @@ void WriteFileAtomically(const std::string& path, const std::string& content);
 // `path` as it was.
 class AtomicFileWriter {
  public:
-  // Throws std::runtime_error naming `path` if the temporary file cannot be created.
-  explicit AtomicFileWriter(const std::string& path);
+  // Throws std::runtime_error naming `path` if the temporary file cannot be
+  // created; `what` names the file's kind in messages ("the trajectory file").
+  explicit AtomicFileWriter(const std::string& path, const std::string& what = "the file");
   ~AtomicFileWriter();
   AtomicFileWriter(const AtomicFileWriter&) = delete;
   AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
@@ -40,7 +41,7 @@ class AtomicFileWriter {
   void Commit();
 
  private:
-  std::string path_, temporary_;
+  std::string path_, what_, temporary_;
   std::ofstream out_;
   bool committed_ = false;
 };

@@ -74,6 +74,21 @@ json IndividualToJson(const Individual& ind) {
           {"genome", GenomeToJson(ind.genome)}};
 }
 
+json MembersToJson(const std::vector<Individual>& members) {
+  json out = json::array();
+  for (const Individual& ind : members) out.push_back(IndividualToJson(ind));
+  return out;
+}
+
+// archive.json's content
+json ArchiveFileJson(const RunConfig& c, int completed, double initial_fitness, const std::vector<Individual>& members) {
+  return {{"case", ScaffoldCaseName(c.scaffold_case)},
+          {"preset", c.preset.name},
+          {"generations", completed},
+          {"initial_fitness", initial_fitness},
+          {"archive", MembersToJson(members)}};
+}
+
 // the keys of a JSON object
 std::vector<std::string> KeysOf(const json& object) {
   std::vector<std::string> keys;
@@ -175,6 +190,33 @@ long DataRows(const std::string& path) {
   return std::max(0L, lines - 1);
 }
 
+// The archive of f's "archive" after `completed` generations: as large as
+// they make it, best first, each member's generation and child within them.
+std::vector<Individual> ArchiveFromJson(const JsonFields& f, int completed, const GeneticAlgorithmConfig& ga,
+                                        double initial_fitness) {
+  const json& members = f.Array("archive");
+  const long size = std::min<long>(ga.archive_size, static_cast<long>(completed) * ga.population);
+  if (static_cast<long>(members.size()) != size) {
+    f.Fail("archive", "has " + std::to_string(members.size()) + " members; " + std::to_string(completed) +
+                          " generations of " + std::to_string(ga.population) + " children fill " +
+                          std::to_string(size));
+  }
+  std::vector<Individual> archive;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const std::string where = "archive[" + std::to_string(i) + "]";
+    Individual ind = IndividualFromJson(JsonFields(members[i], f.source(), where + "."), completed, ga.population);
+    if (!archive.empty() && !Fitter(archive.back(), ind)) {
+      f.Fail(where, "(" + ind.id() + ") is not after archive[" + std::to_string(i - 1) +
+                        "] in the archive's order: fitter first, then older");
+    }
+    if (ind.generation == 0 && ind.child == 0 && ind.fitness() != initial_fitness) {
+      f.Fail(where + ".fitness", "differs from initial_fitness, the fitness of this default genome (0/0)");
+    }
+    archive.push_back(std::move(ind));
+  }
+  return archive;
+}
+
 void RequireSame(const json& stored, const json& requested, const std::string& source) {
   for (const auto& item : requested.items()) {
     if (item.key() == "generations") continue;  // a resumed run may be extended
@@ -245,14 +287,12 @@ RunConfig ParseRunConfig(const std::string& text, const std::string& source) {
 }
 
 json CheckpointToJson(const Checkpoint& cp) {
-  json members = json::array();
-  for (const Individual& ind : cp.archive) members.push_back(IndividualToJson(ind));
   return {{"format", kCheckpointFormat},
           {"completed_generations", cp.completed_generations},
           {"initial_fitness", cp.initial_fitness},
           {"evaluations_bytes", cp.evaluations_bytes},
           {"generations_bytes", cp.generations_bytes},
-          {"archive", members}};
+          {"archive", MembersToJson(cp.archive)}};
 }
 
 Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source) {
@@ -270,28 +310,20 @@ Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, con
   cp.initial_fitness = f.Number("initial_fitness");
   cp.evaluations_bytes = f.Unsigned("evaluations_bytes", std::numeric_limits<std::int64_t>::max());
   cp.generations_bytes = f.Unsigned("generations_bytes", std::numeric_limits<std::int64_t>::max());
-  const json& members = f.Array("archive");
-  const long evaluated = static_cast<long>(cp.completed_generations) * config.ga.population;
-  const long size = std::min<long>(config.ga.archive_size, evaluated);
-  if (static_cast<long>(members.size()) != size) {
-    f.Fail("archive", "has " + std::to_string(members.size()) + " members; " + std::to_string(cp.completed_generations) +
-                          " generations of " + std::to_string(config.ga.population) + " children fill " +
-                          std::to_string(size));
-  }
-  for (std::size_t i = 0; i < members.size(); ++i) {
-    const std::string where = "archive[" + std::to_string(i) + "]";
-    Individual ind =
-        IndividualFromJson(JsonFields(members[i], source, where + "."), cp.completed_generations, config.ga.population);
-    if (!cp.archive.empty() && !Fitter(cp.archive.back(), ind)) {
-      f.Fail(where, "(" + ind.id() + ") is not after archive[" + std::to_string(i - 1) +
-                        "] in the archive's order: fitter first, then older");
-    }
-    if (ind.generation == 0 && ind.child == 0 && ind.fitness() != cp.initial_fitness) {
-      f.Fail(where + ".fitness", "differs from initial_fitness, the fitness of this default genome (0/0)");
-    }
-    cp.archive.push_back(std::move(ind));
-  }
+  cp.archive = ArchiveFromJson(f, cp.completed_generations, config.ga, cp.initial_fitness);
   return cp;
+}
+
+std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& config) {
+  const json j = LoadJsonFile(path);
+  const JsonFields f(j, path);
+  f.RequireOnly(KeysOf(ArchiveFileJson(config, 0, 0.0, {})));
+  if (f.String("case") != ScaffoldCaseName(config.scaffold_case) || f.String("preset") != config.preset.name) {
+    f.Fail("case", "and 'preset' are not the run's (" + std::string(ScaffoldCaseName(config.scaffold_case)) + ", " +
+                       config.preset.name + ")");
+  }
+  const int completed = static_cast<int>(f.Integer("generations", 1, config.generations));
+  return ArchiveFromJson(f, completed, config.ga, f.Number("initial_fitness"));
 }
 
 RunFiles::RunFiles(const std::string& d)
@@ -509,25 +541,12 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
 }
 
 void EvolutionRun::WriteCheckpoint(std::uint64_t evaluations_bytes, std::uint64_t generations_bytes) {
-  json members = json::array();
-  for (const Individual& ind : archive_.members()) members.push_back(IndividualToJson(ind));
-  const json cp = {{"format", kCheckpointFormat},
-                   {"completed_generations", completed_},
-                   {"initial_fitness", initial_fitness_},
-                   {"evaluations_bytes", evaluations_bytes},
-                   {"generations_bytes", generations_bytes},
-                   {"archive", members}};
-  WriteFileAtomically(files_.checkpoint, cp.dump() + "\n");
+  const Checkpoint cp{completed_, initial_fitness_, evaluations_bytes, generations_bytes, archive_.members()};
+  WriteFileAtomically(files_.checkpoint, CheckpointToJson(cp).dump() + "\n");
 }
 
 void EvolutionRun::WriteResults() {
-  json members = json::array();
-  for (const Individual& ind : archive_.members()) members.push_back(IndividualToJson(ind));
-  const json out = {{"case", ScaffoldCaseName(config_.scaffold_case)},
-                    {"preset", config_.preset.name},
-                    {"generations", completed_},
-                    {"initial_fitness", initial_fitness_},
-                    {"archive", members}};
+  const json out = ArchiveFileJson(config_, completed_, initial_fitness_, archive_.members());
   WriteFileAtomically(files_.archive, out.dump(2) + "\n");
   WriteFileAtomically(files_.best, GenomeToJson(archive_.best().genome).dump(2) + "\n");
 }

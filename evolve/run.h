@@ -73,6 +73,10 @@ nlohmann::json CheckpointToJson(const Checkpoint& checkpoint);
 // message starts with `source` and names the field.
 Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source);
 
+// archive.json of a finished run configured as `config`, checked as a
+// checkpoint's archive is. Throws std::runtime_error naming the file.
+std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& config);
+
 // What one generation did, for progress reports and generations.csv.
 struct GenerationSummary {
   int generation = 0;
