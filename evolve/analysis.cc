@@ -206,7 +206,11 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
     return std::string(buf);
   };
   md << "# " << title << "\n\n";
-  md << "## Best fitness (mean ± sd over replicates)\n\n| case | runs |";
+  // one replicate has no spread to show
+  bool replicated = false;
+  for (const CaseSummary& c : s.cases) replicated = replicated || c.runs > 1;
+  md << (replicated ? "## Best fitness (mean ± sd over replicates)" : "## Best fitness (one replicate)")
+     << "\n\n| case | runs |";
   std::vector<int> columns;
   for (const CaseSummary& c : s.cases) {
     for (const auto& [g, m] : c.best_after) {
@@ -227,7 +231,11 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
       if (it == c.best_after.end()) {
         md << " — |";
       } else {
-        std::snprintf(buf, sizeof(buf), " %.2f ± %.2f |", it->second.mean, it->second.sd);
+        if (it->second.n > 1) {
+          std::snprintf(buf, sizeof(buf), " %.2f ± %.2f |", it->second.mean, it->second.sd);
+        } else {
+          std::snprintf(buf, sizeof(buf), " %.2f |", it->second.mean);
+        }
         md << buf;
       }
     }

@@ -87,6 +87,15 @@ genome=$src/data/genomes/default.json
 "$walkers" replay --genome "$genome" --out "$tmp/walk.html" >/dev/null || fail "replay to HTML"
 "$walkers" replay --genome "$genome" --out "$tmp/walk.svg" >/dev/null || fail "replay to SVG"
 "$python" -c "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])" "$tmp/walk.svg" || fail "the SVG does not parse"
+# the filmstrip says which leg is which colour, in the colours its legs are drawn in
+for leg in "#1f77b4:left leg" "#d62728:right leg"; do
+  grep -q "<tspan fill=\"${leg%%:*}\"[^>]*>${leg#*:}</tspan>" "$tmp/walk.svg" &&
+    grep -q "<polyline [^>]*stroke=\"${leg%%:*}\"" "$tmp/walk.svg" || fail "the filmstrip does not say which leg is ${leg#*:}"
+done
+cp "$genome" "$tmp/a&b<c>.json"
+"$walkers" replay --genome "$tmp/a&b<c>.json" --out "$tmp/odd.svg" >/dev/null || fail "replay of a genome with & and < in its name"
+"$python" -c "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])" "$tmp/odd.svg" ||
+  fail "the SVG of a genome named with & and < does not parse"
 "$python" "$src/tests/replay/check_replay.py" "$tmp/walk.html" || fail "the replay page in headless Chromium"
 "$walkers" replay --genome "$genome" --out "$tmp/walk.png" >/dev/null 2>&1 && fail "accepted an unknown replay format"
 
