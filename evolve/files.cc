@@ -278,6 +278,38 @@ void SetAside::Restore() {
   MoveBack(partial, dir_);
 }
 
+OpenedFolder OpenResultsFolder(const std::string& dir, const std::string& what, bool resume,
+                               const std::string& first_checkpoint) {
+  if (resume) {
+    if (!fs::is_directory(dir)) throw std::runtime_error(dir + ": no " + what + " to resume (no such directory)");
+  } else {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir)) {
+      throw std::runtime_error(dir + ": cannot create the " + what + " directory (" + ec.message() + ")");
+    }
+  }
+  OpenedFolder opened{FolderLock(dir, what)};
+  SetAside::Recover(dir);
+  RemoveStaleTemporaries(dir);
+  const std::string aside = SetAside::FolderIn(dir);
+  opened.stopped_force = fs::exists(aside);
+  if (opened.stopped_force && fs::exists(first_checkpoint)) {
+    // the --force that set it aside reached its first checkpoint: it can go
+    std::error_code ec;
+    fs::remove_all(aside, ec);
+    opened.stopped_force = false;
+  }
+  return opened;
+}
+
+std::runtime_error StoppedForceError(const std::string& dir, const std::string& what) {
+  const std::string aside = SetAside::FolderIn(dir);
+  return std::runtime_error(dir + ": a --force was stopped before the new " + what + " completed a generation; the " +
+                            what + " it replaces is in " + aside + ". Pass --force to start the new " + what +
+                            " again, or move what " + aside + " holds back to keep the old " + what);
+}
+
 std::vector<std::string> SplitCsvLine(const std::string& line) {
   std::vector<std::string> out;
   std::string field;

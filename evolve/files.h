@@ -117,6 +117,26 @@ class SetAside {
   bool pending_ = true;
 };
 
+// A folder of results (a run, a reproduction) opened for writing.
+struct OpenedFolder {
+  FolderLock lock;
+  // DIR/replaced/ holds what a --force, stopped before the new results'
+  // first checkpoint, was replacing
+  bool stopped_force = false;
+};
+
+// Opens DIR for writing `what` ("run", "reproduction"): resuming needs DIR,
+// otherwise it is created; then its lock is taken, and only then is anything
+// in it looked at: what a process stopped while setting files aside began is
+// undone (SetAside::Recover), killed writers' temporary files are removed,
+// and DIR/replaced/ is deleted if `first_checkpoint` exists (the --force that
+// made it got that far). Throws std::runtime_error naming DIR.
+OpenedFolder OpenResultsFolder(const std::string& dir, const std::string& what, bool resume,
+                               const std::string& first_checkpoint);
+
+// The error for resuming DIR whose --force was stopped (stopped_force).
+std::runtime_error StoppedForceError(const std::string& dir, const std::string& what);
+
 // Reads CSV text (as the run files hold it) row by row. A field in double
 // quotes may hold commas; "" inside it is one quote. Empty lines are skipped.
 class CsvReader {

@@ -86,36 +86,15 @@ Reproduction::Reproduction(const ReproductionConfig& config, const std::string& 
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
   plan_ = PlanRuns(config_);
-  if (mode == StartMode::kResume) {
-    if (!fs::is_directory(dir)) throw std::runtime_error(dir + ": no reproduction to resume (no such directory)");
-  } else {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) {
-      throw std::runtime_error(dir + ": cannot create the reproduction directory (" + ec.message() + ")");
-    }
-  }
-  lock_.emplace(dir, "reproduction");
-  SetAside::Recover(dir);
-  RemoveStaleTemporaries(dir);
-
+  OpenedFolder opened = OpenResultsFolder(dir, "reproduction", mode == StartMode::kResume,
+                                          RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint);
+  lock_.emplace(std::move(opened.lock));
+  const bool has_aside = opened.stopped_force;
   const std::string aside = SetAside::FolderIn(dir);
-  const bool first_checkpoint = fs::exists(RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint);
-  bool has_aside = fs::exists(aside);
-  if (has_aside && first_checkpoint) {
-    // a --force whose first new run wrote its first checkpoint: the old reproduction can go
-    std::error_code ec;
-    fs::remove_all(aside, ec);
-    has_aside = false;
-  }
   const std::vector<std::string> names = ReproductionNames(dir);
   switch (mode) {
     case StartMode::kResume:
-      if (has_aside) {
-        throw std::runtime_error(dir + ": a --force was stopped before its first run completed a generation; the "
-                                       "reproduction it replaces is in " + aside + ". Pass --force to start again, "
-                                       "or move what " + aside + " holds back to keep the old reproduction");
-      }
+      if (has_aside) throw StoppedForceError(dir, "reproduction");
       break;
     case StartMode::kNew:
       for (const std::string& name : names) {

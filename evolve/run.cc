@@ -357,37 +357,15 @@ EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, Star
       archive_(config.ga.archive_size) {
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
-  if (mode == StartMode::kResume) {
-    if (!fs::is_directory(dir)) throw std::runtime_error(dir + ": no run to resume (no such directory)");
-  } else {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) {
-      throw std::runtime_error(dir + ": cannot create the run directory (" + ec.message() + ")");
-    }
-  }
-  lock_.emplace(dir, "run");
-  SetAside::Recover(dir);
-  RemoveStaleTemporaries(dir);
-
-  const std::string aside = SetAside::FolderIn(dir);
-  bool has_aside = fs::exists(aside);
-  if (has_aside && fs::exists(files_.checkpoint)) {
-    // a --force whose new run wrote its first checkpoint: the old run can go
-    std::error_code ec;
-    fs::remove_all(aside, ec);
-    has_aside = false;
-  }
+  OpenedFolder opened = OpenResultsFolder(dir, "run", mode == StartMode::kResume, files_.checkpoint);
+  lock_.emplace(std::move(opened.lock));
+  const bool has_aside = opened.stopped_force;
   bool has_run = has_aside;
   for (auto file : RunFiles::All()) has_run = has_run || fs::exists(files_.*file);
 
   switch (mode) {
     case StartMode::kResume:
-      if (has_aside) {
-        throw std::runtime_error(dir + ": a --force was stopped before its new run completed a generation; the run it "
-                                       "replaces is in " + aside + ". Pass --force to start the new run again, or "
-                                       "move the files in " + aside + " back to keep the old run");
-      }
+      if (has_aside) throw StoppedForceError(dir, "run");
       if (!fs::exists(files_.config)) throw std::runtime_error(dir + ": no run to resume (config.json is missing)");
       Resume();
       return;

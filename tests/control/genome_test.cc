@@ -7,20 +7,17 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/temp_dir_test.h"
+
 namespace walkers {
 namespace {
 
 std::string DataPath(const std::string& relative) { return std::string(WALKERS_SOURCE_DIR) + "/" + relative; }
 
-class GenomeFileTest : public ::testing::Test {
+class GenomeFileTest : public TempDirTest {
  protected:
-  std::filesystem::path dir_ = std::filesystem::temp_directory_path() /
-                               ("walkers_genome_test_" + std::to_string(::getpid()));
-  void SetUp() override { std::filesystem::create_directories(dir_); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
   std::string Write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
+    const std::string path = (root_ / name).string();
     std::ofstream(path) << text;
     return path;
   }
@@ -61,7 +58,7 @@ TEST_F(GenomeFileTest, SavedFilesLoadBackBitForBit) {
   Genome g = DefaultGenome();
   g[kKy] = 12345.678901234567;
   g[kHalfBodyX] = 0.033;
-  const std::string path = (dir_ / "round.json").string();
+  const std::string path = (root_ / "round.json").string();
   SaveGenome(g, path);
   const Genome back = LoadGenome(path);
   EXPECT_EQ(back.genes, g.genes);
@@ -131,7 +128,7 @@ TEST_F(GenomeFileTest, RejectsDeepNestingWithoutCrashing) {
 TEST_F(GenomeFileTest, RejectsFilesThatAreNotGenomes) {
   EXPECT_NE(LoadError(Write("broken.json", "{\"kx\": ")).find("not valid JSON"), std::string::npos);
   EXPECT_NE(LoadError(Write("array.json", "[1, 2]")).find("JSON object"), std::string::npos);
-  EXPECT_NE(LoadError((dir_ / "absent.json").string()).find("cannot open"), std::string::npos);
+  EXPECT_NE(LoadError((root_ / "absent.json").string()).find("cannot open"), std::string::npos);
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "evolve/analysis.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -9,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/run.h"
+#include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
@@ -25,11 +24,8 @@ struct HandMadeRun {
   double evals_per_s = 4.0;
 };
 
-class AnalysisTest : public ::testing::Test {
+class AnalysisTest : public TempDirTest {
  protected:
-  fs::path root_ = fs::temp_directory_path() / ("walkers_analysis_test_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
 
   RunData Write(const HandMadeRun& h) {
     const std::string name = std::string(ScaffoldCaseName(h.scaffold_case)) + "-" + std::to_string(h.replicate);

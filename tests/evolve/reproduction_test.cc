@@ -1,13 +1,12 @@
 #include "evolve/reproduction.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "evolve/files.h"
+#include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
@@ -26,12 +25,8 @@ ReproductionConfig Tiny(std::uint64_t seed = 5) {
   return c;
 }
 
-class ReproductionTest : public ::testing::Test {
+class ReproductionTest : public TempDirTest {
  protected:
-  fs::path root_ = fs::temp_directory_path() / ("walkers_reproduction_test_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
-  std::string Dir(const std::string& name) const { return (root_ / name).string(); }
   static std::string Error(const std::function<void()>& f) {
     try {
       f();

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
+#include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
@@ -40,13 +41,8 @@ std::string WithoutTimingColumn(const std::string& path) {
   return out;
 }
 
-class RunTest : public ::testing::Test {
+class RunTest : public TempDirTest {
  protected:
-  fs::path root_ = fs::temp_directory_path() / ("walkers_run_test_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
-  std::string Dir(const std::string& name) const { return (root_ / name).string(); }
-
   void ExpectSameRun(const std::string& a, const std::string& b) {
     const RunFiles fa(a), fb(b);
     EXPECT_EQ(WithoutTimingColumn(fa.evaluations), WithoutTimingColumn(fb.evaluations));
