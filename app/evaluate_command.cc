@@ -23,9 +23,13 @@ struct EvaluateOptions {
   std::string trajectory_path;
   bool json = false;
   int ensemble = 0;  // 0: no ensemble
+  bool force = false;
 };
 
 int RunEvaluate(const EvaluateOptions& opt) {
+  if (!opt.trajectory_path.empty()) {
+    CheckOutputFile("--trajectory", opt.trajectory_path, opt.force, {{"--genome", opt.genome_path}});
+  }
   const Genome genome = LoadGenome(opt.genome_path);
   const Preset preset = PresetByName(opt.preset);
 
@@ -89,11 +93,12 @@ void AddEvaluateCommand(CLI::App& app, Command* selected) {
   sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--trajectory", opt->trajectory_path, "Write the trajectory as CSV, one row per 1/30 s");
+  AddForceOption(sub, &opt->force, "the --trajectory file");
   sub->add_flag("--json", opt->json, "Print one JSON object instead of a summary");
   sub->add_option("--ensemble", opt->ensemble,
                   "Also evaluate N times with the relative tolerance scaled by 1 + k 1e-4 and report the "
                   "fitness's spread (the walk can be chaotic; docs/performance.md, Accuracy)")
-      ->check(CLI::Range(1, 1000));
+      ->check(IntegerRange(1, 1000));
   sub->callback([opt, selected] { *selected = [opt] { return RunEvaluate(*opt); }; });
 }
 

@@ -18,8 +18,7 @@ struct EvolveOptions {
   std::uint64_t seed = 1;
   int threads = 0;
   std::string out;
-  bool resume = false;
-  bool force = false;
+  StartFlags start;
   GeneticAlgorithmConfig ga;
 };
 
@@ -33,8 +32,7 @@ int RunEvolve(const EvolveOptions& opt) {
   config.Validate();
 
   const int threads = ThreadsOrAllCores(opt.threads);
-  const StartMode mode = opt.resume ? StartMode::kResume : opt.force ? StartMode::kForce : StartMode::kNew;
-  EvolutionRun run(config, opt.out, mode, threads);
+  EvolutionRun run(config, opt.out, opt.start.mode(), threads);
   if (run.completed_generations() > 0) {
     std::fprintf(stderr, "resuming %s after generation %d\n", opt.out.c_str(), run.completed_generations());
   }
@@ -60,23 +58,21 @@ void AddEvolveCommand(CLI::App& app, Command* selected) {
       ->check(CLI::IsMember({"free", "time", "performance"}));
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations to run")
-      ->check(CLI::Range(1, 10000000))
+      ->check(IntegerRange(1, kMaxGenerations))
       ->capture_default_str();
-  sub->add_option("--seed", opt->seed, "Random seed of the run")->capture_default_str();
+  AddSeedOption(sub, &opt->seed, "Random seed of the run");
   AddThreadsOption(sub, &opt->threads);
   sub->add_option("--out", opt->out, "Run directory")->required();
-  auto* resume = sub->add_flag("--resume", opt->resume, "Continue the run in --out from its last checkpoint");
-  auto* force = sub->add_flag("--force", opt->force, "Replace the run in --out");
-  resume->excludes(force);
+  AddStartFlags(sub, &opt->start, "the run");
   sub->add_option("--population", opt->ga.population, "Children per generation")
-      ->check(CLI::Range(1, 100000))
+      ->check(IntegerRange(kMinPopulation, kMaxPopulation))
       ->capture_default_str();
   sub->add_option("--archive", opt->ga.archive_size, "All-time fittest kept")
-      ->check(CLI::Range(2, 100000))
+      ->check(IntegerRange(kMinArchive, kMaxArchive))
       ->capture_default_str();
   sub->add_option("--mutation-children", opt->ga.mutation_children,
-                  "Mutation children per generation; the rest are crossover children")
-      ->check(CLI::Range(0, 100000))
+                  "Mutation children per generation (at most --population); the rest are crossover children")
+      ->check(IntegerRange(0, kMaxPopulation))
       ->capture_default_str();
   sub->callback([opt, selected] { *selected = [opt] { return RunEvolve(*opt); }; });
 }

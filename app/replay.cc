@@ -30,6 +30,13 @@ std::string ScriptSafe(const std::string& text) {
   return out;
 }
 
+// text that cannot end or open an XML element
+std::string XmlEscaped(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  return out;
+}
+
 struct Xy {
   double x, y;
 };
@@ -94,10 +101,17 @@ std::string FilmstripSvg(const json& walk, double interval) {
   svg << R"(<svg xmlns="http://www.w3.org/2000/svg" width=")" << width << R"(" height=")" << height
       << R"(" viewBox="0 0 )" << width << ' ' << height << R"(" font-family="sans-serif" font-size="12">)" << '\n';
   svg << R"(<rect width="100%" height="100%" fill="white"/>)" << '\n';
-  svg << "<text x=\"8\" y=\"18\" font-size=\"14\">" << walk.value("title", std::string("walker")) << " (fitness "
-      << walk.value("fitness", 0.0) << ", " << walk.value("gait", std::string("?")) << "); ticks every 0.5 m</text>\n";
   const char* colours[2] = {"#1f77b4", "#d62728"};
   const char* side[2] = {"_l", "_r"};
+  const char* leg_names[2] = {"left leg", "right leg"};
+  svg << "<text x=\"8\" y=\"18\" font-size=\"14\">" << XmlEscaped(walk.value("title", std::string("walker")))
+      << " (fitness " << walk.value("fitness", 0.0) << ", " << XmlEscaped(walk.value("gait", std::string("?")))
+      << "); ticks every 0.5 m; ";
+  for (int leg = 0; leg < 2; ++leg) {
+    svg << (leg ? ", " : "") << "<tspan fill=\"" << colours[leg] << "\" font-weight=\"bold\">" << leg_names[leg]
+        << "</tspan>";
+  }
+  svg << "</text>\n";
   for (std::size_t k = 0; k < shots.size(); ++k) {
     const std::size_t i = shots[k];
     const double left = (k % columns) * panel_w, top = 28.0 + (k / columns) * panel_h;

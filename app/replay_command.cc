@@ -1,7 +1,6 @@
 // walkers replay: a picture of one genome's walk, animated (HTML) or as a filmstrip (SVG).
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -10,6 +9,7 @@
 #include "app/replay.h"
 #include "control/genome.h"
 #include "control/walk_record.h"
+#include "evolve/files.h"
 
 namespace walkers::app {
 namespace {
@@ -18,6 +18,7 @@ struct ReplayOptions {
   std::string genome_path;
   std::string preset = "original";
   std::string out;
+  bool force = false;
 };
 
 int RunReplay(const ReplayOptions& opt) {
@@ -25,16 +26,13 @@ int RunReplay(const ReplayOptions& opt) {
   if (extension != ".html" && extension != ".svg") {
     throw std::invalid_argument("--out " + opt.out + ": the file must end in .html (animation) or .svg (filmstrip)");
   }
+  CheckOutputFile("--out", opt.out, opt.force, {{"--genome", opt.genome_path}});
   const Genome genome = LoadGenome(opt.genome_path);
   const Preset preset = PresetByName(opt.preset);
   const std::string title = std::filesystem::path(opt.genome_path).filename().string() + ", preset " + preset.name;
   const RecordedWalk walk = RecordWalk(genome, preset, title);
 
-  std::ofstream out(opt.out);
-  if (!out) throw std::runtime_error(opt.out + ": cannot write");
-  out << (extension == ".html" ? ReplayHtml(walk.json) : FilmstripSvg(walk.json));
-  out.close();
-  if (!out) throw std::runtime_error(opt.out + ": writing failed");
+  WriteFileAtomically(opt.out, extension == ".html" ? ReplayHtml(walk.json) : FilmstripSvg(walk.json));
   std::printf("%s: %s walk, fitness %.4f\n", opt.out.c_str(), GaitName(walk.result.gait), walk.result.fitness);
   return 0;
 }
@@ -47,6 +45,7 @@ void AddReplayCommand(CLI::App& app, Command* selected) {
   sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--out", opt->out, "walk.html (animation) or walk.svg (filmstrip)")->required();
+  AddForceOption(sub, &opt->force, "the --out file");
   sub->callback([opt, selected] { *selected = [opt] { return RunReplay(*opt); }; });
 }
 

@@ -21,7 +21,7 @@ struct ReproduceOptions {
   int threads = 0;
   std::uint64_t seed = 1;
   std::string out;
-  bool resume = false;
+  StartFlags start;
 };
 
 int RunReproduce(const ReproduceOptions& opt) {
@@ -58,7 +58,9 @@ int RunReproduce(const ReproduceOptions& opt) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     progress->Report(s, elapsed / generations_done * generations_left);
   };
-  const ReproductionSummary summary = Reproduce(config, opt.out, opt.resume, threads, observer);
+  // the directory stays locked until the figures are drawn
+  Reproduction reproduction(config, opt.out, opt.start.mode());
+  const ReproductionSummary summary = reproduction.Run(threads, observer);
   if (progress) progress->Finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -92,13 +94,15 @@ void AddReproduceCommand(CLI::App& app, Command* selected) {
       "reproduce", "Reproduce the paper: three scaffolds x replicates, statistics and figures");
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations per run")
-      ->check(CLI::Range(1, 10000000))
+      ->check(IntegerRange(1, kMaxGenerations))
       ->capture_default_str();
-  sub->add_option("--replicates", opt->replicates, "Runs per case")->check(CLI::Range(1, 1000))->capture_default_str();
+  sub->add_option("--replicates", opt->replicates, "Runs per case")
+      ->check(IntegerRange(1, kMaxReplicates))
+      ->capture_default_str();
   AddThreadsOption(sub, &opt->threads);
-  sub->add_option("--seed", opt->seed, "Seed of replicate 1; replicate r uses seed + r - 1")->capture_default_str();
+  AddSeedOption(sub, &opt->seed, "Seed of replicate 1; replicate r uses seed + r - 1");
   sub->add_option("--out", opt->out, "Reproduction directory")->required();
-  sub->add_flag("--resume", opt->resume, "Continue the runs in --out (and redo the statistics and figures)");
+  AddStartFlags(sub, &opt->start, "the reproduction");
   sub->callback([opt, selected] { *selected = [opt] { return RunReproduce(*opt); }; });
 }
 

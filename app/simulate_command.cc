@@ -23,9 +23,13 @@ struct SimulateOptions {
   double duration = 0;
   bool passive = false;
   std::string trajectory_path;
+  bool force = false;
 };
 
 int RunSimulate(const SimulateOptions& opt) {
+  if (!opt.trajectory_path.empty()) {
+    CheckOutputFile("--trajectory", opt.trajectory_path, opt.force, {{"--genome", opt.genome_path}});
+  }
   const Genome genome = LoadGenome(opt.genome_path);
   const Model model = BuildModel(BodyOf(genome));
   const State start = StartState(model);
@@ -81,6 +85,7 @@ void AddSimulateCommand(CLI::App& app, Command* selected) {
   sub->add_flag("--passive", opt->passive,
                 "Plant no foot: the walker drops and collapses (default: both feet planted at the start pose)");
   sub->add_option("--trajectory", opt->trajectory_path, "Write the trajectory as CSV, one row per 1/30 s");
+  AddForceOption(sub, &opt->force, "the --trajectory file");
   sub->callback([opt, selected] { *selected = [opt] { return RunSimulate(*opt); }; });
 }
 

@@ -1,27 +1,29 @@
 // Trajectory files: one row per controller tick (1/30 s) and the final time.
 #pragma once
 
-#include <fstream>
+#include <memory>
 #include <string>
 
 #include "dynamics/coords.h"
 #include "dynamics/observation.h"
+#include "evolve/files.h"
 
 namespace walkers::app {
 
 class TrajectoryCsv {
  public:
-  // with_controller adds the columns `state` and `x_target`. Throws if the
-  // file cannot be written.
+  // with_controller adds the columns `state` and `x_target`. The rows go to a
+  // temporary file that Close() renames into place (evolve/files.h): a
+  // failed or interrupted command leaves an earlier file at `path` as it was.
+  // Throws if the file cannot be written.
   TrajectoryCsv(const std::string& path, bool with_controller);
   void Write(double t, const State& state, const Observation& obs, const char* walking_state = nullptr,
              double x_target = 0.0);
-  // Flushes and checks the file; throws if writing failed.
+  // Flushes, checks and renames the file into place; throws if writing failed.
   void Close();
 
  private:
-  std::string path_;
-  std::ofstream out_;
+  std::unique_ptr<AtomicFileWriter> file_;
   bool with_controller_;
 };
 

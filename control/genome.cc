@@ -1,10 +1,10 @@
 #include "control/genome.h"
 
-#include <cmath>
 #include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
+
+#include "control/input_file.h"
 
 namespace walkers {
 namespace {
@@ -45,23 +45,7 @@ struct MassKey {
 constexpr MassKey kMassKeys[] = {
     {"kneeMass", &Genome::knee_mass}, {"ankleMass", &Genome::ankle_mass}, {"hipMass", &Genome::hip_mass}};
 
-std::string Format(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
-}
-
-double ReadNumber(const nlohmann::json& json, const char* key, const std::string& source) {
-  if (!json.contains(key)) throw GenomeError(source + ": missing gene '" + key + "'");
-  const nlohmann::json& value = json.at(key);
-  if (!value.is_number()) {
-    throw GenomeError(source + ": gene '" + key + "' must be a number, got " + value.dump());
-  }
-  const double x = value.get<double>();
-  if (!std::isfinite(x)) throw GenomeError(source + ": gene '" + key + "' is not finite");
-  return x;
-}
+constexpr NumberRange kMassRange{0.0, 1000.0, true};  // [kg]
 
 }  // namespace
 
@@ -108,55 +92,32 @@ nlohmann::json GenomeToJson(const Genome& genome) {
 
 Genome GenomeFromJson(const nlohmann::json& json, const std::string& source) {
   if (!json.is_object()) throw GenomeError(source + ": a genome must be a JSON object of gene names to numbers");
+  try {
+    const JsonFields genes(json, source, "", "gene");
+    // every key must be a known gene or mass
+    std::vector<std::string> known;
+    for (const GeneSpec& spec : GeneTable()) known.push_back(spec.name);
+    for (const MassKey& m : kMassKeys) known.push_back(m.name);
+    genes.RequireOnly(known);
 
-  // every key must be a known gene or mass
-  for (const auto& item : json.items()) {
-    bool known = false;
-    for (const GeneSpec& spec : GeneTable()) known = known || item.key() == spec.name;
-    for (const MassKey& m : kMassKeys) known = known || item.key() == m.name;
-    if (!known) throw GenomeError(source + ": unknown gene '" + item.key() + "'");
-  }
-
-  Genome genome;
-  for (int i = 0; i < kNumGenes; ++i) {
-    const GeneSpec& spec = GeneTable()[i];
-    const double x = ReadNumber(json, spec.name, source);
-    const double floor = i == kHalfBodyX ? kMinFileHalfBodyX : spec.floor;
-    if (x < floor || x > spec.ceiling) {
-      throw GenomeError(source + ": gene '" + spec.name + "' = " + Format(x) + " is outside its allowed range [" +
-                        Format(floor) + ", " + Format(spec.ceiling) + "]");
+    Genome genome;
+    for (int i = 0; i < kNumGenes; ++i) {
+      const GeneSpec& spec = GeneTable()[i];
+      genome.genes[i] = genes.Number(spec.name, {i == kHalfBodyX ? kMinFileHalfBodyX : spec.floor, spec.ceiling});
     }
-    genome.genes[i] = x;
+    for (const MassKey& m : kMassKeys) genome.*m.field = genes.Number(m.name, kMassRange);
+    return genome;
+  } catch (const InputError& e) {
+    throw GenomeError(e.what());
   }
-  for (const MassKey& m : kMassKeys) {
-    const double x = ReadNumber(json, m.name, source);
-    if (!(x > 0.0) || x > 1000.0) {
-      throw GenomeError(source + ": gene '" + m.name + "' = " + Format(x) +
-                        " is outside its allowed range (0, 1000] kg");
-    }
-    genome.*m.field = x;
-  }
-  return genome;
 }
 
 Genome LoadGenome(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw GenomeError(path + ": cannot open genome file");
-  // remember the last key read, to name the gene of a number that overflows
-  std::string last_key;
-  auto track_keys = [&last_key](int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    if (event == nlohmann::json::parse_event_t::key) last_key = parsed.get<std::string>();
-    return true;
-  };
-  nlohmann::json json;
   try {
-    json = nlohmann::json::parse(in, track_keys);
-  } catch (const nlohmann::json::out_of_range& e) {
-    throw GenomeError(path + ": gene '" + last_key + "' is not a finite number (" + e.what() + ")");
-  } catch (const nlohmann::json::exception& e) {
-    throw GenomeError(path + ": not valid JSON (" + e.what() + ")");
+    return GenomeFromJson(LoadJsonFile(path), path);
+  } catch (const InputError& e) {
+    throw GenomeError(e.what());
   }
-  return GenomeFromJson(json, path);
 }
 
 void SaveGenome(const Genome& genome, const std::string& path) {

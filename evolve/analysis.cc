@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,49 +22,6 @@ constexpr double kPaperCase3OverCase1 = 0.83;
 constexpr double kPaperCase2OverCase1 = 0.66;
 constexpr double kPaperBipedOverTripod = 1.375;
 constexpr int kPaperTripodFinals[3] = {0, 2, 0};  // of three runs, by case
-
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      out.push_back(field);
-      field.clear();
-    } else {
-      field += c;
-    }
-  }
-  out.push_back(field);
-  return out;
-}
-
-// rows of a CSV as maps from column name to text
-std::vector<std::vector<std::string>> ReadCsv(const std::string& path, std::vector<std::string>* header) {
-  std::istringstream in(ReadFile(path));
-  std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(path + ": empty file");
-  *header = SplitCsv(line);
-  std::vector<std::vector<std::string>> rows;
-  for (int number = 2; std::getline(in, line); ++number) {
-    if (line.empty()) continue;
-    rows.push_back(SplitCsv(line));
-    if (rows.back().size() != header->size()) {
-      throw std::runtime_error(path + ": row " + std::to_string(number) + " has " +
-                               std::to_string(rows.back().size()) + " fields, the header " +
-                               std::to_string(header->size()));
-    }
-  }
-  return rows;
-}
-
-int Column(const std::vector<std::string>& header, const std::string& name, const std::string& path) {
-  const auto it = std::find(header.begin(), header.end(), name);
-  if (it == header.end()) throw std::runtime_error(path + ": no column '" + name + "'");
-  return static_cast<int>(it - header.begin());
-}
 
 json Optional(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 
@@ -85,42 +43,43 @@ RunData LoadRunData(const std::string& dir, ScaffoldCase scaffold_case, int repl
   run.name = name;
   const RunFiles files(dir);
 
-  std::vector<std::string> header;
-  const auto generations = ReadCsv(files.generations, &header);
-  const int best = Column(header, "best_fitness", files.generations);
-  const int gait = Column(header, "best_gait", files.generations);
-  const int rate = Column(header, "evals_per_s", files.generations);
-  for (const auto& row : generations) {
-    run.best_fitness.push_back(std::stod(row[best]));
-    run.best_is_tripod.push_back(row[gait] == "tripod");
+  CsvReader generations(ReadFile(files.generations), files.generations);
+  const int best = generations.Column("best_fitness");
+  const int gait = generations.Column("best_gait");
+  const int rate = generations.Column("evals_per_s");
+  std::vector<double> evals_per_s;
+  while (generations.Next()) {
+    run.best_fitness.push_back(generations.Number(best));
+    run.best_is_tripod.push_back(generations.fields()[gait] == "tripod");
+    evals_per_s.push_back(generations.Number(rate));
   }
 
-  const auto evaluations = ReadCsv(files.evaluations, &header);
-  const int gen = Column(header, "generation", files.evaluations);
-  const int child = Column(header, "child", files.evaluations);
-  const int fitness = Column(header, "fitness", files.evaluations);
-  const int fell = Column(header, "fell", files.evaluations);
-  const int kind = Column(header, "gait", files.evaluations);
-  std::vector<long> per_generation(generations.size(), 0);
-  const int first_gene = Column(header, GeneTable()[0].name, files.evaluations);
-  for (const auto& row : evaluations) {
-    EvaluatedSummary e{name, row[gen] + "/" + row[child], std::stod(row[fitness]), row[fell] == "1",
+  CsvReader evaluations(ReadFile(files.evaluations), files.evaluations);
+  const int gen = evaluations.Column("generation");
+  const int child = evaluations.Column("child");
+  const int fitness = evaluations.Column("fitness");
+  const int fell = evaluations.Column("fell");
+  const int kind = evaluations.Column("gait");
+  const int first_gene = evaluations.Column(GeneTable()[0].name);
+  std::vector<long> per_generation(evals_per_s.size(), 0);
+  while (evaluations.Next()) {
+    const std::vector<std::string>& row = evaluations.fields();
+    const std::int64_t g = evaluations.Integer(gen, 0, std::numeric_limits<int>::max());
+    EvaluatedSummary e{name, row[gen] + "/" + row[child], evaluations.Number(fitness), row[fell] == "1",
                        row[kind] == "tripod", Genome{}};
     ++run.evaluations;
     run.falls += e.fell ? 1 : 0;
-    const std::size_t g = std::stoul(row[gen]);
-    if (g < per_generation.size()) ++per_generation[g];
+    if (static_cast<std::size_t>(g) < per_generation.size()) ++per_generation[g];
     if (e.fell) continue;
     std::optional<EvaluatedSummary>* kept = e.tripod ? &run.best_tripod : &run.best_biped;
     if (*kept && (*kept)->fitness >= e.fitness) continue;
     e.genome = DefaultGenome();
-    for (int k = 0; k < kNumGenes; ++k) e.genome.genes[k] = std::stod(row[first_gene + k]);
+    for (int k = 0; k < kNumGenes; ++k) e.genome.genes[k] = evaluations.Number(first_gene + k);
     *kept = e;
   }
   // the time the evaluations took, from each generation's rate
-  for (std::size_t g = 0; g < generations.size(); ++g) {
-    const double evals_per_s = std::stod(generations[g][rate]);
-    if (evals_per_s > 0) run.evaluation_seconds += per_generation[g] / evals_per_s;
+  for (std::size_t g = 0; g < evals_per_s.size(); ++g) {
+    if (evals_per_s[g] > 0) run.evaluation_seconds += per_generation[g] / evals_per_s[g];
   }
   return run;
 }
@@ -247,7 +206,11 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
     return std::string(buf);
   };
   md << "# " << title << "\n\n";
-  md << "## Best fitness (mean ± sd over replicates)\n\n| case | runs |";
+  // one replicate has no spread to show
+  bool replicated = false;
+  for (const CaseSummary& c : s.cases) replicated = replicated || c.runs > 1;
+  md << (replicated ? "## Best fitness (mean ± sd over replicates)" : "## Best fitness (one replicate)")
+     << "\n\n| case | runs |";
   std::vector<int> columns;
   for (const CaseSummary& c : s.cases) {
     for (const auto& [g, m] : c.best_after) {
@@ -268,7 +231,11 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
       if (it == c.best_after.end()) {
         md << " — |";
       } else {
-        std::snprintf(buf, sizeof(buf), " %.2f ± %.2f |", it->second.mean, it->second.sd);
+        if (it->second.n > 1) {
+          std::snprintf(buf, sizeof(buf), " %.2f ± %.2f |", it->second.mean, it->second.sd);
+        } else {
+          std::snprintf(buf, sizeof(buf), " %.2f |", it->second.mean);
+        }
         md << buf;
       }
     }

@@ -6,26 +6,13 @@
 #include <stdexcept>
 #include <thread>
 
+#include "control/input_file.h"
 #include "evolve/random.h"
 
 namespace walkers {
 namespace {
 
 constexpr int kMaxDraws = 100000;
-
-// best first; ties: the older individual first
-bool Fitter(const Individual& a, const Individual& b) {
-  if (a.fitness() != b.fitness()) return a.fitness() > b.fitness();
-  if (a.generation != b.generation) return a.generation < b.generation;
-  return a.child < b.child;
-}
-
-void RequireRange(const char* field, int value, int lo, int hi) {
-  if (value < lo || value > hi) {
-    throw std::invalid_argument(std::string(field) + " = " + std::to_string(value) + " is outside its allowed range [" +
-                                std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  }
-}
 
 // a mutant of `make()` that no earlier individual matches at 3 significant figures
 template <typename MakeChild>
@@ -61,14 +48,17 @@ class ParentDraw {
 
 }  // namespace
 
+bool Fitter(const Individual& a, const Individual& b) {
+  if (a.fitness() != b.fitness()) return a.fitness() > b.fitness();
+  if (a.generation != b.generation) return a.generation < b.generation;
+  return a.child < b.child;
+}
+
 void GeneticAlgorithmConfig::Validate() const {
-  RequireRange("population", population, 1, 100000);
-  RequireRange("archive_size", archive_size, 2, 100000);
-  RequireRange("mutation_children", mutation_children, 0, population);
-  if (!(mutation_probability >= 0.0 && mutation_probability <= 1.0)) {
-    throw std::invalid_argument("mutation_probability = " + std::to_string(mutation_probability) +
-                                " is outside its allowed range [0, 1]");
-  }
+  RequireInRange("population", population, kMinPopulation, kMaxPopulation);
+  RequireInRange("archive_size", archive_size, kMinArchive, kMaxArchive);
+  RequireInRange("mutation_children", mutation_children, 0, population);
+  RequireInRange("mutation_probability", mutation_probability, {0.0, 1.0, true});
 }
 
 void Archive::Merge(const std::vector<Individual>& children) {

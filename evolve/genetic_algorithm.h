@@ -16,11 +16,18 @@
 
 namespace walkers {
 
+// Generation 1 breeds from an archive of at least two: generation 0 must
+// have as many children.
+constexpr int kMinPopulation = 2;
+constexpr int kMaxPopulation = 100000;
+constexpr int kMinArchive = 2;
+constexpr int kMaxArchive = 100000;
+
 struct GeneticAlgorithmConfig {
   int population = 16;         // children per generation; generation 0 = default + population-1 mutants
   int archive_size = 16;       // the all-time fittest kept
   int mutation_children = 10;  // per generation; the rest are crossover children
-  double mutation_probability = 0.9;
+  double mutation_probability = 0.9;  // (0, 1]: at 0 every mutant would repeat its parent
 
   // Throws std::invalid_argument naming the field and its allowed range.
   void Validate() const;
@@ -37,6 +44,9 @@ struct Individual {
   std::string id() const { return std::to_string(generation) + "/" + std::to_string(child); }
   double fitness() const { return result.fitness; }
 };
+
+// The archive's order: the fitter first; at equal fitness the older.
+bool Fitter(const Individual& a, const Individual& b);
 
 // The all-time fittest: best first; equal fitness keeps the older individual.
 class Archive {

@@ -13,14 +13,56 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 void ReproductionConfig::Validate() const {
-  if (replicates < 1 || replicates > 1000) {
-    throw std::invalid_argument("replicates = " + std::to_string(replicates) + " is outside its allowed range [1, 1000]");
+  RequireInRange("replicates", replicates, 1, kMaxReplicates);
+  if (seed > kMaxSeed - static_cast<std::uint64_t>(replicates - 1)) {
+    throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
+                                std::to_string(kMaxSeed - (replicates - 1)) + "] for " + std::to_string(replicates) +
+                                " replicates (replicate r uses seed + r - 1)");
   }
-  RunConfig probe;
-  probe.generations = generations;
-  probe.ga = ga;
-  probe.Validate();
+  for (const PlannedRun& run : PlanRuns(*this)) run.config.Validate();
 }
+
+ReproductionFiles::ReproductionFiles(const std::string& dir)
+    : summary_json((fs::path(dir) / "summary.json").string()),
+      summary_md((fs::path(dir) / "summary.md").string()),
+      walks((fs::path(dir) / "walks.json").string()),
+      gallery((fs::path(dir) / "gallery.json").string()),
+      figures((fs::path(dir) / "figures").string()) {}
+
+std::vector<std::string> ReproductionFiles::Names() {
+  const ReproductionFiles files("");
+  std::vector<std::string> names;
+  for (const std::string* f : {&files.summary_json, &files.summary_md, &files.walks, &files.gallery, &files.figures}) {
+    names.push_back(fs::path(*f).filename().string());
+  }
+  return names;
+}
+
+namespace {
+
+// "<case>-<replicate>"
+bool IsRunName(const std::string& name) {
+  for (ScaffoldCase c : {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance}) {
+    const std::string prefix = std::string(ScaffoldCaseName(c)) + "-";
+    if (name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+        name.find_first_not_of("0123456789", prefix.size()) == std::string::npos) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// what a reproduction in `dir` consists of: its results and every run folder
+std::vector<std::string> ReproductionNames(const std::string& dir) {
+  std::vector<std::string> names = ReproductionFiles::Names();
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && IsRunName(name)) names.push_back(name);
+  }
+  return names;
+}
+
+}  // namespace
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config) {
   std::vector<PlannedRun> runs;
@@ -39,27 +81,61 @@ std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config) {
   return runs;
 }
 
-ReproductionSummary Reproduce(const ReproductionConfig& config, const std::string& dir, bool resume, int threads,
-                              const ReproductionObserver& observer) {
-  config.Validate();
-  const std::vector<PlannedRun> plan = PlanRuns(config);
-  if (!resume) {
-    for (const PlannedRun& run : plan) {
-      if (fs::exists(fs::path(dir) / run.name)) {
-        throw std::runtime_error(dir + ": holds runs already (" + run.name + "); pass --resume to continue them");
+Reproduction::Reproduction(const ReproductionConfig& config, const std::string& dir, StartMode mode)
+    : config_(config), dir_(dir) {
+  // the whole configuration first: nothing is touched for one that cannot run
+  config_.Validate();
+  plan_ = PlanRuns(config_);
+  OpenedFolder opened = OpenResultsFolder(dir, "reproduction", mode == StartMode::kResume,
+                                          RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint);
+  lock_.emplace(std::move(opened.lock));
+  const bool has_aside = opened.stopped_force;
+  const std::string aside = SetAside::FolderIn(dir);
+  const std::vector<std::string> names = ReproductionNames(dir);
+  switch (mode) {
+    case StartMode::kResume:
+      if (has_aside) throw StoppedForceError(dir, "reproduction");
+      break;
+    case StartMode::kNew:
+      for (const std::string& name : names) {
+        const std::string path = (fs::path(dir) / name).string();
+        if (has_aside || fs::exists(path)) {
+          throw std::runtime_error(dir + ": holds a reproduction already (" + (has_aside ? aside : path) +
+                                   "); pass --resume to continue it or --force to replace it");
+        }
       }
+      break;
+    case StartMode::kForce: {
+      // no run may be moved while another process writes it
+      std::vector<FolderLock> runs;
+      for (const std::string& name : names) {
+        const fs::path run = fs::path(dir) / name;
+        if (IsRunName(name) && fs::is_directory(run)) runs.emplace_back(run.string(), "run");
+      }
+      replaced_ = std::make_unique<SetAside>(dir, names);
+      break;
     }
   }
-  for (const PlannedRun& run : plan) {
-    const std::string run_dir = (fs::path(dir) / run.name).string();
+}
+
+// replaced_ goes first, while the lock is still held
+Reproduction::~Reproduction() = default;
+
+ReproductionSummary Reproduction::Run(int threads, const ReproductionObserver& observer) {
+  for (const PlannedRun& run : plan_) {
+    const std::string run_dir = (fs::path(dir_) / run.name).string();
     const bool started = fs::exists(RunFiles(run_dir).config);
     EvolutionRun evolution(run.config, run_dir, started ? StartMode::kResume : StartMode::kNew, threads);
     if (observer.on_run_start) observer.on_run_start(run, evolution.completed_generations());
     evolution.Run([&](const GenerationSummary& s) {
+      if (replaced_) {
+        replaced_->Discard();  // the first new run has its first checkpoint
+        replaced_.reset();
+      }
       if (observer.on_generation) observer.on_generation(run, s);
     });
   }
-  return WriteReproductionResults(config, dir);
+  return WriteReproductionResults(config_, dir_);
 }
 
 ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir) {
@@ -72,9 +148,8 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
     data.push_back(LoadRunData(run_dir, run.scaffold_case, run.replicate, run.name));
     // the gallery, standing: the run's final best and, when that is a biped,
     // the best tripod the run evaluated
-    const json archive = json::parse(ReadFile(RunFiles(run_dir).archive));
-    const json& best = archive.at("archive").at(0);
-    const auto add_to_gallery = [&](const std::string& label, const json& id, const std::string& gait,
+    const Individual best = LoadArchive(RunFiles(run_dir).archive, run.config).front();
+    const auto add_to_gallery = [&](const std::string& label, const std::string& id, const std::string& gait,
                                     double fitness, const Genome& genome) {
       gallery.push_back({{"label", label},
                          {"run", run.name},
@@ -84,10 +159,9 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
                          {"body", BodyJson(BuildModel(BodyOf(genome)))},
                          {"pose", StartPoseJson(genome)}});
     };
-    add_to_gallery(run.name + " best", best.at("id"), best.at("gait"), best.at("fitness"),
-                   GenomeFromJson(best.at("genome"), RunFiles(run_dir).archive));
+    add_to_gallery(run.name + " best", best.id(), GaitName(best.result.gait), best.fitness(), best.genome);
     const std::optional<EvaluatedSummary>& tripod = data.back().best_tripod;
-    if (best.at("gait") != "tripod" && tripod) {
+    if (best.result.gait != Gait::kTripod && tripod) {
       add_to_gallery(run.name + " tripod", tripod->id, "tripod", tripod->fitness, tripod->genome);
     }
     runs.push_back({{"case", ScaffoldCaseName(run.scaffold_case)},
@@ -118,9 +192,10 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
   out["replicates"] = config.replicates;
   out["seed"] = config.seed;
   out["runs"] = runs;
-  WriteFileAtomically((fs::path(dir) / "summary.json").string(), out.dump(2) + "\n");
-  WriteFileAtomically((fs::path(dir) / "walks.json").string(), walks.dump() + "\n");
-  WriteFileAtomically((fs::path(dir) / "gallery.json").string(), json{{"individuals", gallery}}.dump(2) + "\n");
+  const ReproductionFiles files(dir);
+  WriteFileAtomically(files.summary_json, out.dump(2) + "\n");
+  WriteFileAtomically(files.walks, walks.dump() + "\n");
+  WriteFileAtomically(files.gallery, json{{"individuals", gallery}}.dump(2) + "\n");
 
   std::string md = SummaryToMarkdown(summary, "Reproduction: " + std::to_string(config.replicates) + " replicate(s) x " +
                                                   std::to_string(config.generations) + " generations, preset " +
@@ -129,7 +204,7 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
   for (const char* fig : {"fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9"}) {
     md += std::string("![") + fig + "](figures/" + fig + ".png)\n";
   }
-  WriteFileAtomically((fs::path(dir) / "summary.md").string(), md);
+  WriteFileAtomically(files.summary_md, md);
   return summary;
 }
 

@@ -7,10 +7,16 @@
 // DIR/walks.json            the best biped's and best tripod's walks (control/walk_record.h)
 // DIR/gallery.json          every run's final best and, if that is a biped, its
 //                           best tripod, standing, to scale
+// DIR/figures/              drawn by scripts/figures.py (app/figures.h)
+// DIR/walkers.lock          locked by the one process writing the reproduction
+// DIR/replaced/             while --force replaces a reproduction: the old one,
+//                           until the new first run's first checkpoint is written
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +28,8 @@
 
 namespace walkers {
 
+constexpr int kMaxReplicates = 1000;
+
 struct ReproductionConfig {
   Preset preset = OriginalPreset();
   int generations = 4000;
@@ -30,7 +38,18 @@ struct ReproductionConfig {
   GeneticAlgorithmConfig ga;
   EvaluationSettings evaluation;
 
+  // Every run's configuration (RunConfig::Validate), and seed + replicates - 1
+  // within the seeds' range. Throws std::invalid_argument naming the field.
   void Validate() const;
+};
+
+// The files of a reproduction's results, inside its directory.
+struct ReproductionFiles {
+  explicit ReproductionFiles(const std::string& dir);
+  std::string summary_json, summary_md, walks, gallery, figures;
+
+  // their names inside the directory
+  static std::vector<std::string> Names();
 };
 
 struct PlannedRun {
@@ -49,10 +68,30 @@ struct ReproductionObserver {
   std::function<void(const PlannedRun&, const GenerationSummary&)> on_generation;
 };
 
-// Runs (or resumes) every run, then writes the summary and figure data.
-// Without `resume` a directory that holds any of the runs is refused.
-ReproductionSummary Reproduce(const ReproductionConfig& config, const std::string& dir, bool resume, int threads,
-                              const ReproductionObserver& observer = {});
+// A reproduction in a directory. It holds the directory's lock from
+// construction to destruction: keep it while the figures are drawn.
+class Reproduction {
+ public:
+  // Validates the configuration, then takes the directory's lock and only
+  // then looks inside. kNew refuses a directory that holds any runs or
+  // results of a reproduction; kResume needs the directory (it continues
+  // unfinished runs, skips finished ones and starts missing ones); kForce
+  // sets the old runs and results aside in DIR/replaced/ until the first new
+  // run's first checkpoint, and puts them back if abandoned before it.
+  // Throws std::runtime_error naming the directory.
+  Reproduction(const ReproductionConfig& config, const std::string& dir, StartMode mode);
+  ~Reproduction();
+
+  // Runs (or resumes) every run, then writes the summary and figure data.
+  ReproductionSummary Run(int threads, const ReproductionObserver& observer = {});
+
+ private:
+  ReproductionConfig config_;
+  std::string dir_;
+  std::vector<PlannedRun> plan_;
+  std::optional<FolderLock> lock_;
+  std::unique_ptr<SetAside> replaced_;  // under kForce, until the first checkpoint
+};
 
 // Only the analysis: reads the finished runs in DIR and writes summary.json,
 // summary.md, walks.json and gallery.json.

@@ -1,12 +1,15 @@
 #include "evolve/run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "control/input_file.h"
 #include "evolve/files.h"
 
 namespace walkers {
@@ -71,53 +74,147 @@ json IndividualToJson(const Individual& ind) {
           {"genome", GenomeToJson(ind.genome)}};
 }
 
-Individual IndividualFromJson(const json& j, const std::string& source) {
+json MembersToJson(const std::vector<Individual>& members) {
+  json out = json::array();
+  for (const Individual& ind : members) out.push_back(IndividualToJson(ind));
+  return out;
+}
+
+// archive.json's content
+json ArchiveFileJson(const RunConfig& c, int completed, double initial_fitness, const std::vector<Individual>& members) {
+  return {{"case", ScaffoldCaseName(c.scaffold_case)},
+          {"preset", c.preset.name},
+          {"generations", completed},
+          {"initial_fitness", initial_fitness},
+          {"archive", MembersToJson(members)}};
+}
+
+// the keys of a JSON object
+std::vector<std::string> KeysOf(const json& object) {
+  std::vector<std::string> keys;
+  for (const auto& item : object.items()) keys.push_back(item.key());
+  return keys;
+}
+
+// The gaits files may name.
+constexpr Gait kGaits[] = {Gait::kBiped, Gait::kTripod};
+
+Gait GaitFromName(const JsonFields& f, const std::string& key) {
+  std::vector<std::string> names;
+  for (Gait g : kGaits) names.push_back(GaitName(g));
+  const std::string name = f.OneOf(key, names);
+  for (Gait g : kGaits) {
+    if (name == GaitName(g)) return g;
+  }
+  return Gait::kBiped;  // not reached: OneOf refused it
+}
+
+// An archive member of a run of `generations` generations of `population` children.
+Individual IndividualFromJson(const JsonFields& f, int generations, int population) {
+  f.RequireOnly(KeysOf(IndividualToJson(Individual{})));
   Individual ind;
-  ind.generation = j.at("generation").get<int>();
-  ind.child = j.at("child").get<int>();
-  ind.parents = j.at("parents").get<std::string>();
-  ind.genome = GenomeFromJson(j.at("genome"), source);
+  ind.generation = static_cast<int>(f.Integer("generation", 0, generations - 1));
+  ind.child = static_cast<int>(f.Integer("child", 0, population - 1));
+  if (f.String("id") != ind.id()) f.Fail("id", "is not \"" + ind.id() + "\", its generation and child");
+  ind.parents = f.String("parents");
+  ind.genome = GenomeFromJson(f.Get("genome"), f.source() + ": " + f.Name("genome"));
   EvaluationResult& r = ind.result;
-  r.fitness = j.at("fitness").get<double>();
-  r.distance = j.at("distance").get<double>();
-  r.fell = j.at("fell").get<bool>();
-  r.gait = j.at("gait").get<std::string>() == "tripod" ? Gait::kTripod : Gait::kBiped;
-  r.footsteps = j.at("footsteps").get<int>();
-  r.trunk_contact_fraction = j.at("trunk_contact_fraction").get<double>();
-  r.cvode_steps = j.at("cvode_steps").get<long>();
-  r.failure = j.at("failure").get<std::string>();
+  r.fitness = f.Number("fitness");
+  r.distance = f.Number("distance");
+  r.fell = f.Bool("fell");
+  r.gait = GaitFromName(f, "gait");
+  r.footsteps = static_cast<int>(f.Integer("footsteps", 0, std::numeric_limits<int>::max()));
+  r.trunk_contact_fraction = f.Number("trunk_contact_fraction", {0.0, 1.0});
+  r.cvode_steps = static_cast<long>(f.Integer("cvode_steps", 0, std::numeric_limits<long>::max()));
+  r.failure = f.String("failure");
   r.leg_length = ind.genome.leg_length();
   return ind;
 }
 
-json LoadJson(const std::string& path) {
-  try {
-    return json::parse(ReadFile(path));
-  } catch (const json::exception& e) {
-    throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
-  }
+int IntField(const JsonFields& f, const std::string& key) {
+  return static_cast<int>(f.Integer(key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
-// the genes of every evaluated genome, from evaluations.csv (written exactly)
-std::set<GenomeKey> KeysOfEvaluations(const std::string& path) {
-  std::set<GenomeKey> keys;
-  std::istringstream in(ReadFile(path));
-  std::string line;
-  std::getline(in, line);  // header
-  for (int row = 2; std::getline(in, line); ++row) {
-    std::istringstream fields(line);
-    std::string field;
-    for (int i = 0; i < 3; ++i) std::getline(fields, field, ',');  // generation, child, parents
-    Genome g = DefaultGenome();
-    for (int k = 0; k < kNumGenes; ++k) {
-      if (!std::getline(fields, field, ',')) {
-        throw std::runtime_error(path + ": row " + std::to_string(row) + " has too few columns");
-      }
-      g.genes[k] = std::stod(field);
-    }
-    keys.insert(KeyOf(g));
+// The evaluation settings config.json records, with their allowed ranges.
+struct EvaluationField {
+  const char* key;
+  NumberRange range;
+  double* (*of)(EvaluationSettings*);
+};
+const EvaluationField kEvaluationFields[] = {
+    {"duration", {0, 3600, true}, [](EvaluationSettings* e) { return &e->duration; }},
+    {"relative_tolerance", {0, 1, true}, [](EvaluationSettings* e) { return &e->integrator.relative_tolerance; }},
+    {"absolute_tolerance_position", {0, 1, true},
+     [](EvaluationSettings* e) { return &e->integrator.absolute_tolerance_position; }},
+    {"absolute_tolerance_velocity", {0, 1, true},
+     [](EvaluationSettings* e) { return &e->integrator.absolute_tolerance_velocity; }},
+    {"contact_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->contact.surface.stiffness; }},
+    {"contact_dissipation", {0, 1e6}, [](EvaluationSettings* e) { return &e->contact.surface.dissipation; }},
+    {"friction_transition_velocity", {0, 1e3, true},
+     [](EvaluationSettings* e) { return &e->contact.transition_velocity; }},
+    {"weld_depth", {0, 0.1}, [](EvaluationSettings* e) { return &e->weld.depth; }},
+    {"weld_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->weld.stiffness; }},
+    {"weld_angular_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->weld.angular_stiffness; }},
+};
+constexpr int kMaxBdfOrder = 5;  // CVODE's BDF, the method of every run
+// InitF of the performance scaffold: positive (kAuthorsInitialFitness)
+constexpr NumberRange kInitialFitnessRange{0, 1000, true};
+
+double Of(const EvaluationField& field, const EvaluationSettings& settings) {
+  return *field.of(const_cast<EvaluationSettings*>(&settings));
+}
+
+// The rows a checkpoint names: the first `bytes` bytes of a CSV file, whose
+// header must be `header`; calls row(reader, index) for each. Returns how many.
+template <typename OnRow>
+long CheckedRows(const std::string& path, std::uint64_t bytes, const std::string& header, const OnRow& row) {
+  std::string text = ReadFile(path);
+  if (text.size() < bytes) {
+    throw std::runtime_error(path + ": " + std::to_string(text.size()) + " bytes, shorter than the " +
+                             std::to_string(bytes) + " the checkpoint says");
   }
-  return keys;
+  text.resize(bytes);
+  if (text.empty() || text.back() != '\n') {
+    throw std::runtime_error(path + ": the checkpoint's size of " + std::to_string(bytes) + " bytes ends within a row");
+  }
+  if (text.compare(0, header.size() + 1, header + "\n") != 0) {
+    throw std::runtime_error(path + ": its header is not this program's (" + header.substr(0, 40) + "...)");
+  }
+  CsvReader reader(std::move(text), path);
+  long rows = 0;
+  while (reader.Next()) row(reader, rows++);
+  return rows;
+}
+
+// data rows (lines after the header) of a file, 0 if there is none
+long DataRows(const std::string& path) {
+  if (!fs::exists(path)) return 0;
+  const std::string text = ReadFile(path);
+  const long lines = static_cast<long>(std::count(text.begin(), text.end(), '\n'));
+  return std::max(0L, lines - 1);
+}
+
+// The archive of f's "archive" after `completed` generations: as large as
+// they make it, best first, each member's generation and child within them.
+std::vector<Individual> ArchiveFromJson(const JsonFields& f, int completed, const GeneticAlgorithmConfig& ga) {
+  const json& members = f.Array("archive");
+  const long size = std::min<long>(ga.archive_size, static_cast<long>(completed) * ga.population);
+  if (static_cast<long>(members.size()) != size) {
+    f.Fail("archive", "has " + std::to_string(members.size()) + " members; " + std::to_string(completed) +
+                          " generations of " + std::to_string(ga.population) + " children fill " +
+                          std::to_string(size));
+  }
+  std::vector<Individual> archive;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const std::string where = "archive[" + std::to_string(i) + "]";
+    Individual ind = IndividualFromJson(JsonFields(members[i], f.source(), where + "."), completed, ga.population);
+    if (!archive.empty() && !Fitter(archive.back(), ind)) {
+      f.Fail(where, "(" + ind.id() + ") is not after archive[" + std::to_string(i - 1) +
+                        "] in the archive's order: fitter first, then older");
+    }
+    archive.push_back(std::move(ind));
+  }
+  return archive;
 }
 
 void RequireSame(const json& stored, const json& requested, const std::string& source) {
@@ -134,15 +231,21 @@ void RequireSame(const json& stored, const json& requested, const std::string& s
 }  // namespace
 
 void RunConfig::Validate() const {
-  if (generations < 1 || generations > 10000000) {
-    throw std::invalid_argument("generations = " + std::to_string(generations) +
-                                " is outside its allowed range [1, 10000000]");
+  RequireInRange("generations", generations, 1, kMaxGenerations);
+  if (seed > kMaxSeed) {
+    throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
+                                std::to_string(kMaxSeed) + "]");
   }
   ga.Validate();
+  for (const EvaluationField& field : kEvaluationFields) {
+    RequireInRange(std::string("evaluation.") + field.key, Of(field, evaluation), field.range);
+  }
+  RequireInRange("evaluation.max_order", evaluation.integrator.max_order, 1, kMaxBdfOrder);
 }
 
 json RunConfigToJson(const RunConfig& c) {
-  const IntegratorSettings& i = c.evaluation.integrator;
+  json evaluation = {{"max_order", c.evaluation.integrator.max_order}};
+  for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, c.evaluation);
   return {{"case", ScaffoldCaseName(c.scaffold_case)},
           {"preset", c.preset.name},
           {"generations", c.generations},
@@ -151,50 +254,77 @@ json RunConfigToJson(const RunConfig& c) {
           {"archive_size", c.ga.archive_size},
           {"mutation_children", c.ga.mutation_children},
           {"mutation_probability", c.ga.mutation_probability},
-          {"evaluation",
-           {{"duration", c.evaluation.duration},
-            {"relative_tolerance", i.relative_tolerance},
-            {"absolute_tolerance_position", i.absolute_tolerance_position},
-            {"absolute_tolerance_velocity", i.absolute_tolerance_velocity},
-            {"max_order", i.max_order},
-            {"contact_stiffness", c.evaluation.contact.surface.stiffness},
-            {"contact_dissipation", c.evaluation.contact.surface.dissipation},
-            {"friction_transition_velocity", c.evaluation.contact.transition_velocity},
-            {"weld_depth", c.evaluation.weld.depth},
-            {"weld_stiffness", c.evaluation.weld.stiffness},
-            {"weld_angular_stiffness", c.evaluation.weld.angular_stiffness}}}};
+          {"evaluation", evaluation}};
 }
 
 RunConfig RunConfigFromJson(const json& j, const std::string& source) {
   try {
+    const json keys = RunConfigToJson(RunConfig{});
+    const JsonFields f(j, source);
+    f.RequireOnly(KeysOf(keys));
     RunConfig c;
-    c.scaffold_case = ScaffoldCaseByName(j.at("case").get<std::string>());
-    c.preset = PresetByName(j.at("preset").get<std::string>());
-    c.generations = j.at("generations").get<int>();
-    c.seed = j.at("seed").get<std::uint64_t>();
-    c.ga.population = j.at("population").get<int>();
-    c.ga.archive_size = j.at("archive_size").get<int>();
-    c.ga.mutation_children = j.at("mutation_children").get<int>();
-    c.ga.mutation_probability = j.at("mutation_probability").get<double>();
-    const json& e = j.at("evaluation");
-    c.evaluation.duration = e.at("duration").get<double>();
-    c.evaluation.integrator.relative_tolerance = e.at("relative_tolerance").get<double>();
-    c.evaluation.integrator.absolute_tolerance_position = e.at("absolute_tolerance_position").get<double>();
-    c.evaluation.integrator.absolute_tolerance_velocity = e.at("absolute_tolerance_velocity").get<double>();
-    c.evaluation.integrator.max_order = e.at("max_order").get<int>();
-    c.evaluation.contact.surface.stiffness = e.at("contact_stiffness").get<double>();
-    c.evaluation.contact.surface.dissipation = e.at("contact_dissipation").get<double>();
-    c.evaluation.contact.transition_velocity = e.at("friction_transition_velocity").get<double>();
-    c.evaluation.weld.depth = e.at("weld_depth").get<double>();
-    c.evaluation.weld.stiffness = e.at("weld_stiffness").get<double>();
-    c.evaluation.weld.angular_stiffness = e.at("weld_angular_stiffness").get<double>();
+    c.scaffold_case = ScaffoldCaseByName(f.String("case"));
+    c.preset = PresetByName(f.String("preset"));
+    c.generations = IntField(f, "generations");
+    c.seed = f.Unsigned("seed", kMaxSeed);
+    c.ga.population = IntField(f, "population");
+    c.ga.archive_size = IntField(f, "archive_size");
+    c.ga.mutation_children = IntField(f, "mutation_children");
+    c.ga.mutation_probability = f.Number("mutation_probability");
+    const JsonFields e = f.Object("evaluation");
+    e.RequireOnly(KeysOf(keys.at("evaluation")));
+    for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
+    c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
     c.Validate();
     return c;
-  } catch (const json::exception& e) {
-    throw std::runtime_error(source + ": " + e.what());
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(source + ": " + e.what());
   }
+}
+
+RunConfig ParseRunConfig(const std::string& text, const std::string& source) {
+  return RunConfigFromJson(ParseJson(text, source), source);
+}
+
+json CheckpointToJson(const Checkpoint& cp) {
+  return {{"format", kCheckpointFormat},
+          {"completed_generations", cp.completed_generations},
+          {"initial_fitness", cp.initial_fitness},
+          {"evaluations_bytes", cp.evaluations_bytes},
+          {"generations_bytes", cp.generations_bytes},
+          {"archive", MembersToJson(cp.archive)}};
+}
+
+Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source) {
+  const json j = ParseJson(text, source);
+  const JsonFields f(j, source);
+  f.RequireOnly(KeysOf(CheckpointToJson(Checkpoint{})));
+  const std::int64_t format = f.Integer("format", std::numeric_limits<std::int64_t>::min(),
+                                        std::numeric_limits<std::int64_t>::max());
+  if (format != kCheckpointFormat) {
+    f.Fail("format", "= " + std::to_string(format) + ": this program reads format " +
+                         std::to_string(kCheckpointFormat) + " only");
+  }
+  Checkpoint cp;
+  cp.completed_generations = static_cast<int>(f.Integer("completed_generations", 1, config.generations));
+  cp.initial_fitness = f.Number("initial_fitness", kInitialFitnessRange);
+  cp.evaluations_bytes = f.Unsigned("evaluations_bytes", std::numeric_limits<std::int64_t>::max());
+  cp.generations_bytes = f.Unsigned("generations_bytes", std::numeric_limits<std::int64_t>::max());
+  cp.archive = ArchiveFromJson(f, cp.completed_generations, config.ga);
+  return cp;
+}
+
+std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& config) {
+  const json j = LoadJsonFile(path);
+  const JsonFields f(j, path);
+  f.RequireOnly(KeysOf(ArchiveFileJson(config, 0, 0.0, {})));
+  if (f.String("case") != ScaffoldCaseName(config.scaffold_case) || f.String("preset") != config.preset.name) {
+    f.Fail("case", "and 'preset' are not the run's (" + std::string(ScaffoldCaseName(config.scaffold_case)) + ", " +
+                       config.preset.name + ")");
+  }
+  const int completed = static_cast<int>(f.Integer("generations", 1, config.generations));
+  f.Number("initial_fitness", kInitialFitnessRange);
+  return ArchiveFromJson(f, completed, config.ga);
 }
 
 RunFiles::RunFiles(const std::string& d)
@@ -206,83 +336,135 @@ RunFiles::RunFiles(const std::string& d)
       archive((fs::path(d) / "archive.json").string()),
       best((fs::path(d) / "best.json").string()) {}
 
+const std::vector<std::string RunFiles::*>& RunFiles::All() {
+  static const std::vector<std::string RunFiles::*> all = {&RunFiles::config,      &RunFiles::checkpoint,
+                                                           &RunFiles::generations, &RunFiles::evaluations,
+                                                           &RunFiles::archive,     &RunFiles::best};
+  return all;
+}
+
+std::vector<std::string> RunFiles::Names() {
+  const RunFiles files("");
+  std::vector<std::string> names;
+  for (auto file : All()) names.push_back(fs::path(files.*file).filename().string());
+  return names;
+}
+
 EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, int threads)
     : config_(config),
       files_(dir),
       threads_(std::max(1, threads)),
       scaffold_(MakeScaffold(config.scaffold_case, config.preset)),
       archive_(config.ga.archive_size) {
+  // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) {
-    throw std::runtime_error(dir + ": cannot create the run directory (" + ec.message() + ")");
-  }
-  const bool has_run = fs::exists(files_.config) || fs::exists(files_.checkpoint) ||
-                       fs::exists(files_.evaluations) || fs::exists(files_.generations);
-  if (mode == StartMode::kResume) {
-    if (!fs::exists(files_.config)) {
-      throw std::runtime_error(dir + ": no run to resume (config.json is missing)");
-    }
-    Resume();
-    return;
-  }
-  if (has_run && mode == StartMode::kNew) {
-    throw std::runtime_error(dir + ": holds a run already; pass --resume to continue it or --force to replace it");
+  OpenedFolder opened = OpenResultsFolder(dir, "run", mode == StartMode::kResume, files_.checkpoint);
+  lock_.emplace(std::move(opened.lock));
+  const bool has_aside = opened.stopped_force;
+  bool has_run = has_aside;
+  for (auto file : RunFiles::All()) has_run = has_run || fs::exists(files_.*file);
+
+  switch (mode) {
+    case StartMode::kResume:
+      if (has_aside) throw StoppedForceError(dir, "run");
+      if (!fs::exists(files_.config)) throw std::runtime_error(dir + ": no run to resume (config.json is missing)");
+      Resume();
+      return;
+    case StartMode::kNew:
+      if (has_run) {
+        throw std::runtime_error(dir + ": holds a run already; pass --resume to continue it or --force to replace it");
+      }
+      break;
+    case StartMode::kForce:
+      replaced_ = std::make_unique<SetAside>(dir, RunFiles::Names());
+      break;
   }
   StartFresh();
 }
 
+// replaced_ goes first, while the lock is still held
 EvolutionRun::~EvolutionRun() = default;
 
 void EvolutionRun::StartFresh() {
-  // only the run's own files go; anything else in the directory stays
-  for (const std::string* f : {&files_.checkpoint, &files_.generations, &files_.evaluations, &files_.archive,
-                               &files_.best, &files_.config}) {
-    std::error_code ec;
-    fs::remove(*f, ec);
-  }
   WriteFileAtomically(files_.config, RunConfigToJson(config_).dump(2) + "\n");
   WriteFileAtomically(files_.generations, std::string(kGenerationsHeader) + "\n");
   WriteFileAtomically(files_.evaluations, EvaluationsHeader() + "\n");
   completed_ = 0;
 }
 
+void EvolutionRun::CheckNoResultsWithoutCheckpoint() const {
+  // a run killed before its first checkpoint has written at most generation
+  // 0's rows; anything more had a checkpoint, and starting again would hide
+  // that it went missing
+  const long generation_rows = DataRows(files_.generations), evaluation_rows = DataRows(files_.evaluations);
+  std::string results;
+  if (generation_rows > 1) results = "generations.csv has " + std::to_string(generation_rows) + " rows";
+  if (results.empty() && evaluation_rows > config_.ga.population) {
+    results = "evaluations.csv has " + std::to_string(evaluation_rows) + " rows";
+  }
+  for (const std::string* f : {&files_.archive, &files_.best}) {
+    if (results.empty() && fs::exists(*f)) results = fs::path(*f).filename().string() + " exists";
+  }
+  if (!results.empty()) {
+    throw std::runtime_error(files_.checkpoint + ": missing, but the run has results (" + results +
+                             "); restore checkpoint.json to resume the run, or pass --force to start it again "
+                             "(the old files are kept in " + SetAside::FolderIn(files_.dir) +
+                             " until the new run's first generation is written)");
+  }
+}
+
 void EvolutionRun::Resume() {
-  const json stored = LoadJson(files_.config);
-  RequireSame(stored, RunConfigToJson(config_), files_.config);
+  // everything is read and checked before anything is written
+  const RunConfig stored = RunConfigFromJson(LoadJsonFile(files_.config), files_.config);
+  RequireSame(RunConfigToJson(stored), RunConfigToJson(config_), files_.config);
   if (!fs::exists(files_.checkpoint)) {
     // killed before its first generation completed: start it again
+    CheckNoResultsWithoutCheckpoint();
     StartFresh();
     return;
   }
-  const json cp = LoadJson(files_.checkpoint);
-  try {
-    if (cp.at("format").get<int>() != kCheckpointFormat) {
-      throw std::runtime_error(files_.checkpoint + ": unknown checkpoint format");
-    }
-    completed_ = cp.at("completed_generations").get<int>();
-    initial_fitness_ = cp.at("initial_fitness").get<double>();
-    std::vector<Individual> members;
-    for (const json& j : cp.at("archive")) members.push_back(IndividualFromJson(j, files_.checkpoint));
-    archive_.Restore(std::move(members));
-    // drop what was written after the checkpoint
-    const auto evaluations_bytes = cp.at("evaluations_bytes").get<std::uint64_t>();
-    const auto generations_bytes = cp.at("generations_bytes").get<std::uint64_t>();
-    if (FileSize(files_.evaluations) < evaluations_bytes || FileSize(files_.generations) < generations_bytes) {
-      throw std::runtime_error(files_.dir + ": the CSV files are shorter than the checkpoint says");
-    }
-    TruncateFile(files_.evaluations, evaluations_bytes);
-    TruncateFile(files_.generations, generations_bytes);
-  } catch (const json::exception& e) {
-    throw std::runtime_error(files_.checkpoint + ": " + e.what());
-  }
-  if (completed_ > config_.generations) {
-    throw std::runtime_error(files_.dir + ": the run has " + std::to_string(completed_) +
+  Checkpoint cp = ParseCheckpoint(ReadFile(files_.checkpoint), stored, files_.checkpoint);
+  if (cp.completed_generations > config_.generations) {
+    throw std::runtime_error(files_.dir + ": the run has " + std::to_string(cp.completed_generations) +
                              " generations already, more than the " + std::to_string(config_.generations) +
                              " asked for");
   }
-  seen_ = KeysOfEvaluations(files_.evaluations);
+  // the CSV files up to the checkpoint: its generations, in order, every row whole
+  const int population = stored.ga.population;
+  std::set<GenomeKey> seen;
+  const long evaluations = CheckedRows(
+      files_.evaluations, cp.evaluations_bytes, EvaluationsHeader(), [&](const CsvReader& row, long index) {
+        row.Integer(0, index / population, index / population);  // generation
+        row.Integer(1, index % population, index % population);  // child
+        Genome g = DefaultGenome();
+        for (int k = 0; k < kNumGenes; ++k) g.genes[k] = row.Number(3 + k);
+        seen.insert(KeyOf(g));
+      });
+  const long expected = static_cast<long>(cp.completed_generations) * population;
+  if (evaluations != expected) {
+    throw std::runtime_error(files_.evaluations + ": " + std::to_string(evaluations) +
+                             " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations) +
+                             " generations of " + std::to_string(population) + " (" + std::to_string(expected) + ")");
+  }
+  const long generations = CheckedRows(files_.generations, cp.generations_bytes, kGenerationsHeader,
+                                       [](const CsvReader& row, long index) { row.Integer(0, index, index); });
+  if (generations != cp.completed_generations) {
+    throw std::runtime_error(files_.generations + ": " + std::to_string(generations) +
+                             " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations));
+  }
+  for (const Individual& ind : cp.archive) {
+    if (!seen.count(KeyOf(ind.genome))) {
+      throw std::runtime_error(files_.checkpoint + ": archive member " + ind.id() + " is not in " + files_.evaluations);
+    }
+  }
+
+  completed_ = cp.completed_generations;
+  initial_fitness_ = cp.initial_fitness;
+  archive_.Restore(std::move(cp.archive));
+  seen_ = std::move(seen);
+  // drop what was written after the checkpoint
+  TruncateFile(files_.evaluations, cp.evaluations_bytes);
+  TruncateFile(files_.generations, cp.generations_bytes);
   // a longer run than first asked for: the config says so from now on
   WriteFileAtomically(files_.config, RunConfigToJson(config_).dump(2) + "\n");
 }
@@ -329,31 +511,22 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
     const std::uint64_t generations_bytes = AppendDurably(files_.generations, GenerationRow(s));
     completed_ = g + 1;
     WriteCheckpoint(evaluations_bytes, generations_bytes);
+    if (replaced_) {
+      replaced_->Discard();  // the new run has its first checkpoint
+      replaced_.reset();
+    }
     if (on_generation) on_generation(s);
   }
   WriteResults();
 }
 
 void EvolutionRun::WriteCheckpoint(std::uint64_t evaluations_bytes, std::uint64_t generations_bytes) {
-  json members = json::array();
-  for (const Individual& ind : archive_.members()) members.push_back(IndividualToJson(ind));
-  const json cp = {{"format", kCheckpointFormat},
-                   {"completed_generations", completed_},
-                   {"initial_fitness", initial_fitness_},
-                   {"evaluations_bytes", evaluations_bytes},
-                   {"generations_bytes", generations_bytes},
-                   {"archive", members}};
-  WriteFileAtomically(files_.checkpoint, cp.dump() + "\n");
+  const Checkpoint cp{completed_, initial_fitness_, evaluations_bytes, generations_bytes, archive_.members()};
+  WriteFileAtomically(files_.checkpoint, CheckpointToJson(cp).dump() + "\n");
 }
 
 void EvolutionRun::WriteResults() {
-  json members = json::array();
-  for (const Individual& ind : archive_.members()) members.push_back(IndividualToJson(ind));
-  const json out = {{"case", ScaffoldCaseName(config_.scaffold_case)},
-                    {"preset", config_.preset.name},
-                    {"generations", completed_},
-                    {"initial_fitness", initial_fitness_},
-                    {"archive", members}};
+  const json out = ArchiveFileJson(config_, completed_, initial_fitness_, archive_.members());
   WriteFileAtomically(files_.archive, out.dump(2) + "\n");
   WriteFileAtomically(files_.best, GenomeToJson(archive_.best().genome).dump(2) + "\n");
 }

@@ -6,8 +6,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh
-./build/app/walkers reproduce --generations 30 --replicates 1 --out runs/demo --resume
-./build/app/walkers replay --genome runs/demo/performance-1/best.json --out runs/demo/walk.html
+# run again, the demo continues (or only redraws) what an earlier one left
+again=()
+[ -d runs/demo ] && again=(--resume)
+./build/app/walkers reproduce --generations 30 --replicates 1 --out runs/demo "${again[@]}"
+./build/app/walkers replay --genome runs/demo/performance-1/best.json --out runs/demo/walk.html --force
 echo
 echo "statistics: runs/demo/summary.md"
 echo "figures:    runs/demo/figures/ (fig4a ... fig9, PNG and SVG)"

@@ -34,9 +34,16 @@ Absent data (documented choice):
     and its fig9 legend entry reads "... (no data)"; a warning is printed.
   * An empty gallery row (no bipeds or no tripods) says "no data" in fig5.
 
+A figure that cannot be drawn or written (a full disk, say) is reported in one line
+on stderr naming the figure and the cause; the traceback goes to
+RUN_DIR/figures/figures.log (removed again by the next run that succeeds), and the
+exit status is 1.
+
 fig9 uses the sample standard deviation (ddof = 1) over the replicates; with one
 replicate no band is drawn. Replicates of unequal length are averaged over the
-generations they all have (warning printed).
+generations they all have (warning printed). The generation axes of fig8 and fig9
+end at the number of generations summary.json names ("generations"; else the
+longest run's).
 """
 import argparse
 import csv
@@ -44,6 +51,7 @@ import json
 import math
 import os
 import sys
+import traceback
 
 import matplotlib
 
@@ -52,12 +60,14 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
-from matplotlib.patches import Circle, Polygon  # noqa: E402
+from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
 
 CASES = ("free", "time", "performance")
 CASE_LABELS = {"free": "Case 1 free", "time": "Case 2 time-constrained",
                "performance": "Case 3 performance-based"}
 CASE_COLOURS = {"free": "tab:green", "time": "tab:orange", "performance": "tab:purple"}
+# fig9's bands, told apart where they overlap
+CASE_HATCHES = {"free": "////", "time": "\\\\\\\\", "performance": "...."}
 GAIT_COLOURS = {"biped": "tab:blue", "tripod": "tab:red"}
 GAIT_CMAPS = {"biped": "Blues", "tripod": "Reds"}
 SINGLE, DOUBLE = 3.5, 7.0          # column widths, inches
@@ -74,11 +84,17 @@ FRAME_KEYS = ("t", "trunk", "hip", "knee_l", "ankle_l", "foot_l", "knee_r", "ank
 STYLE = {"font.size": 8, "axes.titlesize": 8, "axes.labelsize": 8,
          "xtick.labelsize": 8, "ytick.labelsize": 8, "legend.fontsize": 8,
          "figure.titlesize": 9, "axes.linewidth": 0.6, "lines.linewidth": 1.0,
-         "legend.frameon": False, "svg.hashsalt": "figures", "figure.dpi": DPI}
+         "legend.frameon": False, "svg.hashsalt": "figures", "figure.dpi": DPI,
+         "hatch.linewidth": 0.4}
+LOG_NAME = "figures.log"
 
 
 class InputError(Exception):
     """A missing or malformed input file; the message names the file."""
+
+
+class FigureError(Exception):
+    """A figure that could not be drawn or written; the message names it."""
 
 
 def warn(message):
@@ -125,10 +141,12 @@ def load_summary(run_dir):
                              f"expected one of {', '.join(CASES)}")
         runs.append({"case": case, "replicate": field(run, "replicate", path, where, int),
                      "dir": field(run, "dir", path, where, str)})
-    replicates = summary.get("replicates", 0)
-    if not isinstance(replicates, int) or isinstance(replicates, bool):
-        raise InputError(f"{path}: field 'replicates' has the wrong type")
-    return runs, max([replicates] + [r["replicate"] for r in runs])
+    counts = {}
+    for key in ("replicates", "generations"):
+        counts[key] = summary.get(key, 0)
+        if not isinstance(counts[key], int) or isinstance(counts[key], bool):
+            raise InputError(f"{path}: field '{key}' has the wrong type")
+    return runs, max([counts["replicates"]] + [r["replicate"] for r in runs]), counts["generations"]
 
 
 def load_generations(path):
@@ -250,21 +268,32 @@ def load_run_dir(run_dir):
     """Read and validate every input; raises InputError naming the bad file."""
     if not os.path.isdir(run_dir):
         raise InputError(f"{run_dir}: not a directory")
-    runs, replicates = load_summary(run_dir)
+    runs, replicates, generations = load_summary(run_dir)
     for run in runs:
         run["data"] = load_generations(os.path.join(run_dir, run["dir"],
                                                     "generations.csv"))
+    # the generation axes end where the summary's last "after N" column does
+    longest = max([int(r["data"]["generation"][-1]) + 1 for r in runs] + [1])
     return {"runs": runs, "replicates": replicates, "walks": load_walks(run_dir),
-            "gallery": load_gallery(run_dir)}
+            "gallery": load_gallery(run_dir), "generations": generations or longest}
 
 
 # ----------------------------------------------------------------------------- drawing
 
 def save(fig, out_dir, name):
-    """Write NAME.png (200 dpi) and NAME.svg, then close the figure."""
+    """Write NAME.png (200 dpi) and NAME.svg, then close the figure. Each is written
+    to a temporary file first and renamed into place: a failed write leaves an
+    earlier figure as it was."""
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out_dir, f"{name}.{ext}"), dpi=DPI,
-                    metadata={"Date": None} if ext == "svg" else None)
+        path = os.path.join(out_dir, f"{name}.{ext}")
+        temporary = f"{path}.tmp.{os.getpid()}"
+        try:
+            fig.savefig(temporary, format=ext, dpi=DPI,
+                        metadata={"Date": None} if ext == "svg" else None)
+            os.replace(temporary, path)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
     plt.close(fig)
     print(f"wrote {os.path.join(out_dir, name)}.png/.svg")
 
@@ -352,9 +381,12 @@ def walk_label(walk):
     return f"best {walk['gait']} ({walk['run']}), fitness {walk['fitness']:.1f}"
 
 
-def legend_above(ax, ncol=1, title=None):
+def legend_above(ax, ncol=1, title=None, handles=None):
     """A legend above the axes, left-aligned, so it never hides data."""
-    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=ncol, title=title,
+    if handles is None:
+        handles = ax.get_legend_handles_labels()[0]
+    ax.legend(handles=handles, loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=ncol,
+              title=title,
               title_fontsize=8, alignment="left", borderaxespad=0.0,
               handlelength=1.5, columnspacing=1.0)
 
@@ -520,10 +552,11 @@ def fig7(runs, walks, out_dir):
     g = d["generation"]
     fig, ax = plt.subplots(figsize=(SINGLE, 2.6), layout="constrained")
     tripod = np.array([x == "tripod" for x in d["best_gait"]])
+    band = Patch(facecolor=matplotlib.colors.to_rgba("tab:red", 0.3), edgecolor="tab:red",
+                 lw=0.6, label="tripod gait")      # the band's swatch, visible in the legend
     if tripod.any():
-        ax.fill_between(g, 0, 1, where=tripod, step="mid", color="tab:red", alpha=0.12,
-                        lw=0, transform=ax.get_xaxis_transform(),
-                        label="tripod gait")
+        ax.fill_between(g, 0, 1, where=tripod, step="mid", color="tab:red", alpha=0.15,
+                        lw=0, transform=ax.get_xaxis_transform())
     ax.plot(g, 2 * d["best_half_body_x"], color="k", label="body")
     ax.plot(g, d["best_femur"], color="tab:cyan", label="femur")
     ax.plot(g, d["best_tibia"], color="tab:brown", label="tibia")
@@ -532,7 +565,9 @@ def fig7(runs, walks, out_dir):
     ax.set_xlim(g[0], g[-1])
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3, lw=0.5)
-    legend_above(ax, ncol=4 if tripod.any() else 3, title=f"{run['dir']} ({why})")
+    handles = ax.get_legend_handles_labels()[0] + ([band] if tripod.any() else [])
+    legend_above(ax, ncol=4 if tripod.any() else 3, title=f"{run['dir']} ({why})",
+                 handles=handles)
     save(fig, out_dir, "fig7")
 
 
@@ -542,14 +577,13 @@ def runs_by_case(runs):
             for c in CASES}
 
 
-def fig8(runs, replicates, out_dir):
+def fig8(runs, replicates, generations, out_dir):
     """Grid (rows = cases, columns = replicates) of best fitness coloured by gait."""
     grouped = runs_by_case(runs)
     ncols = max(1, replicates)
     fig, axes = plt.subplots(len(CASES), ncols, sharex=True, sharey=True, squeeze=False,
                              figsize=(DOUBLE, 1.15 + 1.45 * len(CASES)),
                              layout="constrained")
-    gmax = max([r["data"]["generation"][-1] for r in runs] + [1])
     for row, case in enumerate(CASES):
         by_rep = {r["replicate"]: r for r in grouped[case]}
         for col in range(ncols):
@@ -573,7 +607,7 @@ def fig8(runs, replicates, out_dir):
         axes[row, 0].set_ylabel("best fitness\n(leg lengths)")
     for ax in axes[-1]:
         ax.set_xlabel("generation")
-    axes[0, 0].set_xlim(0, gmax)
+    axes[0, 0].set_xlim(0, generations)
     ymax = max([float(np.nanmax(r["data"]["best_fitness"])) for r in runs] + [1.0])
     axes[0, 0].set_ylim(0, 1.05 * ymax)
     handles = [Line2D([], [], color=c, lw=1.5, label=f"best is a {g}")
@@ -594,7 +628,7 @@ def case_stats(case, runs):
     return runs[0]["data"]["generation"][:n], y.mean(axis=0), std
 
 
-def fig9(runs, out_dir):
+def fig9(runs, generations, out_dir):
     """Mean +- sample standard deviation of best fitness per generation, per case."""
     fig, ax = plt.subplots(figsize=(SINGLE, 3.1), layout="constrained")
     for case, group in runs_by_case(runs).items():
@@ -605,10 +639,14 @@ def fig9(runs, out_dir):
         g, mean, std = case_stats(case, group)
         ax.plot(g, mean, color=colour, label=f"{CASE_LABELS[case]} (n = {len(group)})")
         if len(group) > 1:
-            ax.fill_between(g, mean - std, mean + std, color=colour, alpha=0.2, lw=0)
+            # outlined and hatched, so that overlapping bands stay apart
+            ax.fill_between(g, mean - std, mean + std, lw=0.6, ls="--",
+                            facecolor=matplotlib.colors.to_rgba(colour, 0.15),
+                            edgecolor=matplotlib.colors.to_rgba(colour, 0.8),
+                            hatch=CASE_HATCHES[case])
     ax.set_xlabel("generation")
     ax.set_ylabel("best fitness (leg lengths)")
-    ax.set_xlim(left=0)
+    ax.set_xlim(0, generations)
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3, lw=0.5)
     legend_above(ax, title="best fitness, mean ± s.d. over replicates")
@@ -616,6 +654,24 @@ def fig9(runs, out_dir):
 
 
 # ----------------------------------------------------------------------------- main
+
+def drawn(name, draw, *args):
+    """draw(*args), any failure raised as a FigureError naming the figure."""
+    try:
+        draw(*args)
+    except Exception as e:  # noqa: BLE001 - whatever failed, the figure is named
+        raise FigureError(f"{name}: {e}") from e
+
+
+def log_traceback(path, error):
+    """Write error's traceback to path; returns where it went, for the message."""
+    try:
+        with open(path, "w", encoding="utf-8") as f:
+            traceback.print_exception(type(error), error, error.__traceback__, file=f)
+        return f"traceback in {path}"
+    except OSError as e:
+        return f"its traceback could not be written to {path}: {e.strerror}"
+
 
 def draw_all(inputs, out_dir):
     """Draw every figure whose data is present; warn about the rest."""
@@ -629,24 +685,24 @@ def draw_all(inputs, out_dir):
             if walks[gait] is None:
                 warn(f"walks.json: no {gait} (null): fig4a, fig4b, fig6 show the "
                      "other walker only")
-        fig4a(walks, out_dir)
-        fig4b(walks, out_dir)
-        fig6(walks, out_dir)
+        drawn("fig4a", fig4a, walks, out_dir)
+        drawn("fig4b", fig4b, walks, out_dir)
+        drawn("fig6", fig6, walks, out_dir)
     if gallery is None:
         warn("gallery.json not found: skipping fig5")
     elif not gallery:
         warn("gallery.json: no individuals: skipping fig5")
     else:
-        fig5(gallery, out_dir)
+        drawn("fig5", fig5, gallery, out_dir)
     if not runs:
         warn("summary.json lists no runs: skipping fig7, fig8, fig9")
         return
     for case, group in runs_by_case(runs).items():
         if not group:
             warn(f"summary.json: no runs for case '{case}': fig8 and fig9 say 'no data'")
-    fig7(runs, walks, out_dir)
-    fig8(runs, inputs["replicates"], out_dir)
-    fig9(runs, out_dir)
+    drawn("fig7", fig7, runs, walks, out_dir)
+    drawn("fig8", fig8, runs, inputs["replicates"], inputs["generations"], out_dir)
+    drawn("fig9", fig9, runs, inputs["generations"], out_dir)
 
 
 def main(argv=None):
@@ -660,9 +716,17 @@ def main(argv=None):
         print(f"error: {e}", file=sys.stderr)
         return 1
     out_dir = os.path.join(args.run_dir, "figures")
-    os.makedirs(out_dir, exist_ok=True)
-    with plt.rc_context(STYLE):
-        draw_all(inputs, out_dir)
+    log = os.path.join(out_dir, LOG_NAME)
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+        with plt.rc_context(STYLE):
+            draw_all(inputs, out_dir)
+    except Exception as e:  # noqa: BLE001 - one line here, the traceback in the log
+        print(f"error: drawing the figures failed: {e} ({log_traceback(log, e)})",
+              file=sys.stderr)
+        return 1
+    if os.path.exists(log):
+        os.remove(log)     # an earlier failure's
     return 0
 
 

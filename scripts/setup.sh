@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages this project needs, when they are missing.
 # Run as root (or with sudo available). Nothing is downloaded at build or run time.
 #   setup.sh            what building and running need
-#   setup.sh --test     and what the tests need: Chromium, to check the replay page
+#   setup.sh --test     and what the tests need: Chromium, to check the replay page;
+#                       clang and its libFuzzer runtime, for the loaders' fuzz targets
 #   setup.sh --authors  and what building the authors' program for scripts/compare_authors.py needs
 set -euo pipefail
 
@@ -12,7 +13,7 @@ packages=(
   python3 python3-matplotlib python3-scipy
 )
 case "${1:-}" in
-  --test) packages+=(chromium) ;;
+  --test) packages+=(chromium clang libclang-rt-14-dev) ;;
   --authors) packages+=(libsimbody-dev libarmadillo-dev) ;;
 esac
 

@@ -50,12 +50,13 @@ expect 0 '"ensemble":\{"bipeds":[0-9]+,"falls":[0-9]+,"fitness":\[[-0-9.e]+,[-0-
   evaluate --genome "$genome" --ensemble 3 --json
 expect 0 '^ensemble of 3 .*fitness median [-0-9.]+, min [-0-9.]+, max [-0-9.]+; [0-3] bipeds, [0-3] falls' -- \
   evaluate --genome "$genome" --ensemble 3
-expect nonzero 'ensemble: Value 0 not in range 1 to 1000' -- evaluate --genome "$genome" --ensemble 0
+expect nonzero 'ensemble: value 0 is outside the allowed range \[1, 1000\]' -- evaluate --genome "$genome" --ensemble 0
 
 # evolve: an uninterrupted run, and the same run killed (SIGKILL) at random
 # moments and resumed each time, end with the same files (but for the
 # wall-clock columns, the last of each CSV row)
-small=(--case performance --generations 6 --population 8 --archive 8 --mutation-children 5 --seed 3 --threads 2)
+common=(--case performance --population 8 --archive 8 --mutation-children 5 --seed 3 --threads 2)
+small=("${common[@]}" --generations 6)
 expect 0 'best fitness' -- evolve "${small[@]}" --out "$tmp/whole"
 "$walkers" evolve "${small[@]}" --out "$tmp/killed" >/dev/null 2>&1 &
 pid=$!
@@ -100,6 +101,86 @@ expect nonzero 'cannot create the run directory' -- evolve --case free --out "$t
 expect nonzero 'no run to resume' -- evolve --case free --out "$tmp/empty" --resume
 expect nonzero 'seed = 3 but 4' -- evolve --case performance --generations 6 --population 8 --archive 8 --mutation-children 5 --seed 4 --out "$tmp/whole" --resume
 expect nonzero 'simulate|Usage|subcommand' --
+
+# nothing lost, ever
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# same_run A B: the same files but for the wall-clock columns
+same_run() {
+  for f in evaluations.csv generations.csv; do
+    cmp -s <(sed 's/,[^,]*$//' "$1/$f") <(sed 's/,[^,]*$//' "$2/$f") || fail "$2/$f differs from $1/$f"
+  done
+  for f in archive.json best.json config.json; do cmp -s "$1/$f" "$2/$f" || fail "$2/$f differs from $1/$f"; done
+}
+
+# 1. two processes on one run folder: the second is refused at once, naming
+# the folder and the first's pid, and the run ends as an uninterrupted one
+"$walkers" evolve "${common[@]}" --generations 3 --out "$tmp/shared" >/dev/null 2>&1 || fail "evolve 3 generations"
+"$walkers" evolve "${small[@]}" --out "$tmp/shared" --resume >"$tmp/first.txt" 2>&1 &
+first=$!
+for _ in $(seq 100); do grep -q resuming "$tmp/first.txt" && break; sleep 0.1; done
+expect nonzero "shared: another walkers process \(pid $first\) is writing this run" -- \
+  evolve "${small[@]}" --out "$tmp/shared" --resume
+wait $first || { cat "$tmp/first.txt"; fail "the first of two resumes failed"; }
+same_run "$tmp/whole" "$tmp/shared"
+
+# 2. outputs are never replaced silently, and never when they are an input
+cp "$genome" "$tmp/g.json"
+expect nonzero 'trajectory .*g.json is the --genome file' -- evaluate --genome "$tmp/g.json" --trajectory "$tmp/g.json"
+expect nonzero 'is the --genome file' -- evaluate --genome "$tmp/g.json" --trajectory "$tmp/g.json" --force
+expect nonzero 'is the --genome file' -- simulate --genome "$tmp/g.json" --duration 0.1 --trajectory "$tmp/g.json" --force
+cmp -s "$genome" "$tmp/g.json" || fail "a trajectory replaced the genome"
+for command in "evaluate --genome $genome" "simulate --genome $genome --duration 0.1"; do
+  echo mine >"$tmp/old.csv"
+  # shellcheck disable=SC2086
+  expect nonzero 'old.csv exists; pass --force to replace it' -- $command --trajectory "$tmp/old.csv"
+  [[ $(cat "$tmp/old.csv") == mine ]] || fail "$command replaced an existing trajectory"
+  # shellcheck disable=SC2086
+  expect 0 '.' -- $command --trajectory "$tmp/old.csv" --force
+  [[ $(head -c 4 "$tmp/old.csv") == t,x, ]] || fail "$command --force did not write the trajectory"
+done
+echo mine >"$tmp/old.html"
+expect nonzero 'old.html exists; pass --force' -- replay --genome "$genome" --out "$tmp/old.html"
+[[ $(cat "$tmp/old.html") == mine ]] || fail "replay replaced an existing page"
+cp "$genome" "$tmp/g.svg"
+expect nonzero 'is the --genome file' -- replay --genome "$tmp/g.svg" --out "$tmp/g.svg" --force
+cmp -s "$genome" "$tmp/g.svg" || fail "replay replaced its genome"
+
+# 3. --force with a configuration that cannot run leaves the old run intact
+cp -a "$tmp/whole" "$tmp/whole.before"
+expect nonzero 'population: value 1 is outside the allowed range \[2, 100000\]' -- \
+  evolve --case performance --population 1 --mutation-children 1 --out "$tmp/whole" --force
+expect nonzero 'mutation_children = 9 is outside its allowed range \[0, 8\]' -- \
+  evolve --case performance --population 8 --mutation-children 9 --out "$tmp/whole" --force
+diff -r "$tmp/whole.before" "$tmp/whole" >/dev/null || fail "a refused --force changed the run"
+
+# 4. a checkpoint is checked before it is trusted
+cp -a "$tmp/whole" "$tmp/cp"
+sed -i 's/"completed_generations":6/"completed_generations":-3/' "$tmp/cp/checkpoint.json"
+cp -a "$tmp/cp" "$tmp/cp.before"
+expect nonzero "cp/checkpoint.json: field 'completed_generations' = -3 is outside its allowed range \[1, 6\]" -- \
+  evolve "${common[@]}" --generations 8 --out "$tmp/cp" --resume
+diff -r -x walkers.lock "$tmp/cp.before" "$tmp/cp" >/dev/null || fail "a refused resume changed the run"
+cp "$tmp/whole/checkpoint.json" "$tmp/cp/checkpoint.json"
+sed -i 's/"format":1,//' "$tmp/cp/checkpoint.json"
+expect nonzero "cp/checkpoint.json: missing field 'format'" -- evolve "${common[@]}" --generations 8 --out "$tmp/cp" --resume
+rm "$tmp/cp/checkpoint.json"
+expect nonzero "cp/checkpoint.json: missing, but the run has results \(generations.csv has 6 rows\).*--force" -- \
+  evolve "${common[@]}" --generations 8 --out "$tmp/cp" --resume
+cmp -s "$tmp/whole/generations.csv" "$tmp/cp/generations.csv" || fail "a resume without checkpoint restarted the run"
+
+# 5. smaller ones
+expect nonzero 'seed: value -1 is outside the allowed range \[0, 4294967295\]' -- \
+  evolve --case free --generations 1 --population 2 --mutation-children 1 --seed -1 --out "$tmp/seeded"
+expect nonzero 'no run to resume \(no such directory\)' -- evolve --case free --out "$tmp/missing" --resume
+[ ! -e "$tmp/missing" ] || fail "--resume created the directory it could not resume"
+sed 's/^{/{"kStep": 900, /' "$genome" >"$tmp/twice.json"
+expect nonzero "twice.json: key 'kStep' appears twice" -- evaluate --genome "$tmp/twice.json"
+expect nonzero 'not expected: bogus; the commands are simulate, evaluate, evolve, replay, reproduce' -- bogus
+expect nonzero 'not expected: evolv .*; did you mean evolve\?' -- evolv --case free
+expect nonzero 'generations: value 1.5 is not an integer in \[1, 10000000\]' -- evolve --case free --generations 1.5 --out "$tmp/x"
+expect nonzero 'not expected: --genom .*default.json; did you mean --genome\?' -- evaluate --genom "$genome"
+sed 's/"femurLength": [0-9.]*/"femurLength": 2.5/' "$genome" >"$tmp/long.json"
+expect nonzero "gene 'femurLength' = 2.5 is outside its allowed range \[0.1, 1.9\]$" -- evaluate --genome "$tmp/long.json"
 
 [[ $failures -eq 0 ]] || { echo "$failures CLI check(s) failed"; exit 1; }
 echo "all CLI checks passed"

@@ -56,17 +56,46 @@ for run in ("free-1", "time-1", "performance-1"):
     else:
         assert len(mine) == 1, (run, mine)
 PY
-# resuming a finished reproduction redoes only the statistics and figures
-WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume >"$tmp/again.txt" 2>&1 ||
-  { cat "$tmp/again.txt"; fail "resuming the finished reproduction failed"; }
+# resuming a finished reproduction redoes only the statistics and figures;
+# a second process on the folder meanwhile is refused at once
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume >"$tmp/again.txt" 2>&1 &
+again=$!
+for _ in $(seq 100); do grep -q "done already" "$tmp/again.txt" && break; sleep 0.1; done
+second=$(WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume 2>&1) &&
+  fail "a second reproduce ran beside the first"
+grep -q "rep: another walkers process (pid $again) is writing this reproduction" <<<"$second" ||
+  fail "the second reproduce was not refused naming the first: $second"
+wait $again || { cat "$tmp/again.txt"; fail "resuming the finished reproduction failed"; }
 grep -q "done already" "$tmp/again.txt" || fail "resume did not find the runs done"
 "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" >/dev/null 2>&1 && fail "overwrote a reproduction without --resume"
+
+# --force: an impossible configuration leaves the reproduction intact; a
+# possible one replaces it, and keeps nothing of the old once it has begun
+cp -a "$tmp/rep" "$tmp/rep.before"
+out=$("$walkers" reproduce --generations 3 --replicates 2 --seed 4294967295 --out "$tmp/rep" --force 2>&1) &&
+  fail "reproduce --force accepted seeds beyond the range"
+grep -q 'seed = 4294967295 is outside its allowed range \[0, 4294967294\]' <<<"$out" || fail "no seed range in: $out"
+diff -r -x walkers.lock "$tmp/rep.before" "$tmp/rep" >/dev/null || fail "a refused --force changed the reproduction"
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 2 --replicates 1 --threads 2 --out "$tmp/rep" --force >"$tmp/force.txt" 2>&1 ||
+  { cat "$tmp/force.txt"; fail "reproduce --force failed"; }
+[ ! -e "$tmp/rep/replaced" ] || fail "reproduce --force kept the old reproduction after its first run"
+"$python" -c "import json, sys; assert json.load(open(sys.argv[1]))['generations'] == 2" "$tmp/rep/summary.json" ||
+  fail "reproduce --force did not replace the summary"
 
 # replay: the animation in a real browser, the filmstrip as XML
 genome=$src/data/genomes/default.json
 "$walkers" replay --genome "$genome" --out "$tmp/walk.html" >/dev/null || fail "replay to HTML"
 "$walkers" replay --genome "$genome" --out "$tmp/walk.svg" >/dev/null || fail "replay to SVG"
 "$python" -c "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])" "$tmp/walk.svg" || fail "the SVG does not parse"
+# the filmstrip says which leg is which colour, in the colours its legs are drawn in
+for leg in "#1f77b4:left leg" "#d62728:right leg"; do
+  grep -q "<tspan fill=\"${leg%%:*}\"[^>]*>${leg#*:}</tspan>" "$tmp/walk.svg" &&
+    grep -q "<polyline [^>]*stroke=\"${leg%%:*}\"" "$tmp/walk.svg" || fail "the filmstrip does not say which leg is ${leg#*:}"
+done
+cp "$genome" "$tmp/a&b<c>.json"
+"$walkers" replay --genome "$tmp/a&b<c>.json" --out "$tmp/odd.svg" >/dev/null || fail "replay of a genome with & and < in its name"
+"$python" -c "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])" "$tmp/odd.svg" ||
+  fail "the SVG of a genome named with & and < does not parse"
 "$python" "$src/tests/replay/check_replay.py" "$tmp/walk.html" || fail "the replay page in headless Chromium"
 "$walkers" replay --genome "$genome" --out "$tmp/walk.png" >/dev/null 2>&1 && fail "accepted an unknown replay format"
 

@@ -7,20 +7,17 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/temp_dir_test.h"
+
 namespace walkers {
 namespace {
 
 std::string DataPath(const std::string& relative) { return std::string(WALKERS_SOURCE_DIR) + "/" + relative; }
 
-class GenomeFileTest : public ::testing::Test {
+class GenomeFileTest : public TempDirTest {
  protected:
-  std::filesystem::path dir_ = std::filesystem::temp_directory_path() /
-                               ("walkers_genome_test_" + std::to_string(::getpid()));
-  void SetUp() override { std::filesystem::create_directories(dir_); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
   std::string Write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
+    const std::string path = (root_ / name).string();
     std::ofstream(path) << text;
     return path;
   }
@@ -61,7 +58,7 @@ TEST_F(GenomeFileTest, SavedFilesLoadBackBitForBit) {
   Genome g = DefaultGenome();
   g[kKy] = 12345.678901234567;
   g[kHalfBodyX] = 0.033;
-  const std::string path = (dir_ / "round.json").string();
+  const std::string path = (root_ / "round.json").string();
   SaveGenome(g, path);
   const Genome back = LoadGenome(path);
   EXPECT_EQ(back.genes, g.genes);
@@ -102,7 +99,8 @@ TEST_F(GenomeFileTest, RejectsInfinity) {
 TEST_F(GenomeFileTest, RejectsAValueOutsideItsRangeAndNamesTheRange) {
   const std::string error = LoadError(WriteDefaultWith("femurLength", 2.5));
   EXPECT_NE(error.find("'femurLength' = 2.5"), std::string::npos) << error;
-  EXPECT_NE(error.find("[0.10000000000000001, 1.8999999999999999]"), std::string::npos) << error;
+  // bounds print as the shortest text that reads back exactly
+  EXPECT_NE(error.find("[0.1, 1.9]"), std::string::npos) << error;
   EXPECT_NE(LoadError(WriteDefaultWith("ky", 2999.0)), "");
   EXPECT_NE(LoadError(WriteDefaultWith("hipMass", -1.0)), "");
 }
@@ -113,10 +111,24 @@ TEST_F(GenomeFileTest, AcceptsTheAuthorsShortTrunksButNotAVanishingOne) {
   EXPECT_NE(error.find("'halfBodyX'"), std::string::npos) << error;
 }
 
+TEST_F(GenomeFileTest, RejectsADuplicatedGeneNamingIt) {
+  // the last value would win and hide the out-of-range first one
+  std::string text = GenomeToJson(DefaultGenome()).dump();
+  text.insert(1, "\"kStep\": 900, ");
+  const std::string error = LoadError(Write("twice.json", text));
+  EXPECT_NE(error.find("twice.json: key 'kStep' appears twice"), std::string::npos) << error;
+}
+
+TEST_F(GenomeFileTest, RejectsDeepNestingWithoutCrashing) {
+  const std::string text = "{\"kx\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  const std::string error = LoadError(Write("deep.json", text));
+  EXPECT_NE(error.find("nested more than"), std::string::npos) << error;
+}
+
 TEST_F(GenomeFileTest, RejectsFilesThatAreNotGenomes) {
   EXPECT_NE(LoadError(Write("broken.json", "{\"kx\": ")).find("not valid JSON"), std::string::npos);
   EXPECT_NE(LoadError(Write("array.json", "[1, 2]")).find("JSON object"), std::string::npos);
-  EXPECT_NE(LoadError((dir_ / "absent.json").string()).find("cannot open"), std::string::npos);
+  EXPECT_NE(LoadError((root_ / "absent.json").string()).find("cannot open"), std::string::npos);
 }
 
 }  // namespace

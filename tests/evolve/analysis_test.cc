@@ -1,7 +1,5 @@
 #include "evolve/analysis.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -9,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/run.h"
+#include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
@@ -25,11 +24,8 @@ struct HandMadeRun {
   double evals_per_s = 4.0;
 };
 
-class AnalysisTest : public ::testing::Test {
+class AnalysisTest : public TempDirTest {
  protected:
-  fs::path root_ = fs::temp_directory_path() / ("walkers_analysis_test_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
 
   RunData Write(const HandMadeRun& h) {
     const std::string name = std::string(ScaffoldCaseName(h.scaffold_case)) + "-" + std::to_string(h.replicate);
@@ -120,6 +116,19 @@ TEST_F(AnalysisTest, KnownAnswersOnHandMadeRuns) {
   EXPECT_NE(md.find("| 50.0 % | 66 % |"), std::string::npos) << md;
   EXPECT_NE(md.find("+160.0 %"), std::string::npos) << md;
   EXPECT_NE(md.find("4.00 ± 1.41"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2, time-constrained | 1 | 2.00 |"), std::string::npos) << md;  // one run: no spread
+}
+
+TEST_F(AnalysisTest, OneReplicateShowsNoSpread) {
+  const std::vector<std::string> bipeds(2, "biped");
+  std::vector<RunData> runs;
+  for (ScaffoldCase c : {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance}) {
+    runs.push_back(Write({c, 1, {1, 2}, bipeds, {{0, 1.0, false, "biped"}, {1, 2.0, false, "biped"}}}));
+  }
+  const std::string md = SummaryToMarkdown(Summarize(runs), "one");
+  EXPECT_EQ(md.find("±"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Best fitness (one replicate)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 1, free | 1 | 2.00 |"), std::string::npos) << md;
 }
 
 TEST_F(AnalysisTest, MissingCasesLeaveTheirComparisonsOut) {

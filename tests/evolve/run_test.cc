@@ -4,12 +4,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
+#include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
@@ -38,13 +41,8 @@ std::string WithoutTimingColumn(const std::string& path) {
   return out;
 }
 
-class RunTest : public ::testing::Test {
+class RunTest : public TempDirTest {
  protected:
-  fs::path root_ = fs::temp_directory_path() / ("walkers_run_test_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
-  std::string Dir(const std::string& name) const { return (root_ / name).string(); }
-
   void ExpectSameRun(const std::string& a, const std::string& b) {
     const RunFiles fa(a), fb(b);
     EXPECT_EQ(WithoutTimingColumn(fa.evaluations), WithoutTimingColumn(fb.evaluations));
@@ -145,9 +143,268 @@ TEST_F(RunTest, NeverOverwritesARunUnlessForced) {
   }
   EXPECT_EQ(ReadFile(RunFiles(Dir("a")).evaluations), before);
   // --force replaces the run's files, and only those
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kForce, 2);
+  RunConfig other = SmallRun(ScaffoldCase::kFree, 1);
+  other.seed = 7;
+  EvolutionRun(other, Dir("a"), StartMode::kForce, 2).Run();
   EXPECT_EQ(ReadFile(Dir("a") + "/notes.txt"), "mine");
-  EXPECT_FALSE(fs::exists(RunFiles(Dir("a")).checkpoint));
+  EXPECT_NE(ReadFile(RunFiles(Dir("a")).evaluations), before);
+  EXPECT_FALSE(fs::exists(Dir("a") + "/replaced"));
+}
+
+// every run file's content, by name, and whether the set-aside folder exists
+std::map<std::string, std::string> RunFileContents(const std::string& dir) {
+  std::map<std::string, std::string> out;
+  for (const std::string& name : RunFiles::Names()) {
+    const fs::path path = fs::path(dir) / name;
+    out[name] = fs::exists(path) ? ReadFile(path.string()) : "(absent)";
+  }
+  out["replaced/"] = fs::exists(fs::path(dir) / "replaced") ? "exists" : "(absent)";
+  return out;
+}
+
+TEST_F(RunTest, ForceKeepsTheOldRunAsideUntilTheNewRunsFirstCheckpoint) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, 2).Run();
+  const auto old_run = RunFileContents(Dir("a"));
+  RunConfig other = SmallRun(ScaffoldCase::kFree, 2);
+  other.seed = 7;
+  {
+    EvolutionRun forced(other, Dir("a"), StartMode::kForce, 2);
+    // the old run is aside, whole; the new one has begun
+    EXPECT_EQ(ReadFile(Dir("a") + "/replaced/evaluations.csv"), old_run.at("evaluations.csv"));
+    EXPECT_EQ(ReadFile(Dir("a") + "/replaced/checkpoint.json"), old_run.at("checkpoint.json"));
+    EXPECT_FALSE(fs::exists(RunFiles(Dir("a")).checkpoint));
+  }
+  // abandoned before its first generation: the old run is back, as it was
+  EXPECT_EQ(RunFileContents(Dir("a")), old_run);
+
+  EvolutionRun forced(other, Dir("a"), StartMode::kForce, 2);
+  int generations = 0;
+  forced.Run([&](const GenerationSummary&) {
+    ++generations;
+    EXPECT_FALSE(fs::exists(Dir("a") + "/replaced")) << "kept after the first checkpoint";
+  });
+  EXPECT_EQ(generations, 2);
+}
+
+TEST_F(RunTest, ForceWithAnImpossibleConfigurationLeavesTheOldRunIntact) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, 2).Run();
+  const auto old_run = RunFileContents(Dir("a"));
+  // one child a generation: generation 1 could not breed from an archive of one
+  RunConfig impossible = SmallRun(ScaffoldCase::kFree, 3);
+  impossible.ga.population = 1;
+  impossible.ga.mutation_children = 1;
+  try {
+    EvolutionRun(impossible, Dir("a"), StartMode::kForce, 2);
+    FAIL() << "started a run that cannot breed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "population = 1 is outside its allowed range [2, 100000]");
+  }
+  EXPECT_EQ(RunFileContents(Dir("a")), old_run);
+}
+
+TEST_F(RunTest, ValidateChecksEveryConstraintOfARun) {
+  const auto error = [](RunConfig c) -> std::string {
+    try {
+      c.Validate();
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error(SmallRun()), "");
+  RunConfig c = SmallRun();
+  c.ga.mutation_children = 9;
+  EXPECT_EQ(error(c), "mutation_children = 9 is outside its allowed range [0, 8]");
+  c = SmallRun();
+  c.ga.mutation_probability = 0.0;  // every mutant would repeat its parent
+  EXPECT_EQ(error(c), "mutation_probability = 0 is outside its allowed range (0, 1]");
+  c = SmallRun();
+  c.seed = kMaxSeed + 1;
+  EXPECT_EQ(error(c), "seed = 4294967296 is outside its allowed range [0, 4294967295]");
+  c = SmallRun();
+  c.generations = 0;
+  EXPECT_EQ(error(c), "generations = 0 is outside its allowed range [1, 10000000]");
+  c = SmallRun();
+  c.evaluation.duration = -1;
+  EXPECT_EQ(error(c), "evaluation.duration = -1 is outside its allowed range (0, 3600]");
+}
+
+TEST_F(RunTest, OneWriterPerRunDirectory) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  {
+    EvolutionRun first(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2);
+    const auto before = RunFileContents(Dir("a"));
+    for (StartMode mode : {StartMode::kResume, StartMode::kForce, StartMode::kNew}) {
+      try {
+        EvolutionRun second(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), mode, 2);
+        FAIL() << "two writers on one run";
+      } catch (const std::runtime_error& e) {
+        const std::string expected =
+            Dir("a") + ": another walkers process (pid " + std::to_string(::getpid()) + ") is writing this run";
+        EXPECT_EQ(std::string(e.what()).rfind(expected, 0), 0u) << e.what();
+      }
+    }
+    EXPECT_EQ(RunFileContents(Dir("a")), before);
+  }
+  // released with its holder
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2).Run();
+}
+
+// the file with `change` applied to its text
+void EditFile(const std::string& path, const std::function<void(std::string*)>& change) {
+  std::string text = ReadFile(path);
+  change(&text);
+  std::ofstream(path, std::ios::trunc) << text;
+}
+
+class CheckpointTest : public RunTest {
+ protected:
+  void SetUp() override {
+    RunTest::SetUp();
+    EvolutionRun(SmallRun(ScaffoldCase::kFree, 3), Dir("a"), StartMode::kNew, 2).Run();
+    files_ = RunFileContents(Dir("a"));
+  }
+  // the message of resuming the run, which must leave its files as they were
+  std::string ResumeError() {
+    try {
+      EvolutionRun(SmallRun(ScaffoldCase::kFree, 5), Dir("a"), StartMode::kResume, 2);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  }
+  void ExpectRefusedNaming(const std::string& file, const std::string& text) {
+    const auto edited = RunFileContents(Dir("a"));
+    const std::string error = ResumeError();
+    EXPECT_EQ(error.rfind(Dir("a") + "/" + file + ": ", 0), 0u) << error;
+    EXPECT_NE(error.find(text), std::string::npos) << error;
+    EXPECT_EQ(RunFileContents(Dir("a")), edited) << "a refused resume changed the files";
+  }
+  std::string Checkpoint() const { return RunFiles(Dir("a")).checkpoint; }
+  std::map<std::string, std::string> files_;
+};
+
+TEST_F(CheckpointTest, ANegativeGenerationCountIsRefusedNamingTheField) {
+  EditFile(Checkpoint(), [](std::string* t) {
+    const std::size_t at = t->find("\"completed_generations\":3");
+    ASSERT_NE(at, std::string::npos) << *t;
+    t->replace(at, 25, "\"completed_generations\":-3");
+  });
+  ExpectRefusedNaming("checkpoint.json", "field 'completed_generations' = -3 is outside its allowed range [1, 3]");
+}
+
+TEST_F(CheckpointTest, AMissingFieldIsNamedNotALibraryMessage) {
+  EditFile(Checkpoint(), [](std::string* t) { t->replace(t->find("\"format\":1,"), 11, ""); });
+  ExpectRefusedNaming("checkpoint.json", "missing field 'format'");
+}
+
+TEST_F(CheckpointTest, ADuplicatedKeyIsRefused) {
+  EditFile(Checkpoint(), [](std::string* t) { t->insert(1, "\"completed_generations\":1,"); });
+  ExpectRefusedNaming("checkpoint.json", "key 'completed_generations' appears twice");
+}
+
+TEST_F(CheckpointTest, AnArchiveThatTheRunCannotHaveIsRefused) {
+  EditFile(Checkpoint(), [](std::string* t) {
+    const std::size_t at = t->find("\"gait\":\"");
+    t->replace(at, 8, "\"gait\":\"x");
+  });
+  ExpectRefusedNaming("checkpoint.json", "field 'archive[0].gait' = \"x");
+}
+
+TEST_F(CheckpointTest, AnArchiveGenomeOutOfRangeIsRefusedNamingIt) {
+  EditFile(Checkpoint(), [](std::string* t) {
+    const std::size_t at = t->find("\"kStep\":");
+    t->replace(at, 8, "\"kStep\":9000,\"x\":");
+  });
+  ExpectRefusedNaming("checkpoint.json", "archive[0].genome: unknown gene 'x'");
+}
+
+TEST_F(CheckpointTest, CsvFilesThatDisagreeWithTheCheckpointAreRefused) {
+  // a gene of row 3 is no number
+  EditFile(RunFiles(Dir("a")).evaluations, [](std::string* t) {
+    std::size_t at = 0;
+    for (int line = 0; line < 3; ++line) at = t->find('\n', at) + 1;
+    at = t->find(',', t->find(',', t->find(',', at) + 1) + 1) + 1;  // the first gene
+    t->replace(at, 3, "abc");
+  });
+  ExpectRefusedNaming("evaluations.csv", "row 4, column 'halfBodyX': 'abc");
+}
+
+TEST_F(CheckpointTest, AShortenedCsvIsRefused) {
+  const std::string path = RunFiles(Dir("a")).generations;
+  TruncateFile(path, FileSize(path) - 5);
+  ExpectRefusedNaming("generations.csv", "shorter than the");
+}
+
+TEST_F(CheckpointTest, ADeletedCheckpointBesideResultsIsAnErrorNotARestart) {
+  fs::remove(Checkpoint());
+  const std::string error = ResumeError();
+  EXPECT_NE(error.find("checkpoint.json: missing, but the run has results (generations.csv has 3 rows)"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("--force"), std::string::npos) << error;
+  auto expected = files_;
+  expected["checkpoint.json"] = "(absent)";
+  EXPECT_EQ(RunFileContents(Dir("a")), expected);
+}
+
+TEST_F(CheckpointTest, AConfigWithADuplicatedOrUnknownKeyIsRefused) {
+  const std::string config = RunFiles(Dir("a")).config;
+  EditFile(config, [](std::string* t) { t->insert(1, "\"seed\": 1,"); });
+  ExpectRefusedNaming("config.json", "key 'seed' appears twice");
+  std::ofstream(config, std::ios::trunc) << files_.at("config.json");
+  EditFile(config, [](std::string* t) { t->insert(1, "\"seeds\": 1,"); });
+  ExpectRefusedNaming("config.json", "unknown field 'seeds'");
+  std::ofstream(config, std::ios::trunc) << files_.at("config.json");
+  EditFile(config, [](std::string* t) { t->replace(t->find("\"population\": 8"), 15, "\"population\": 1"); });
+  ExpectRefusedNaming("config.json", "population = 1 is outside its allowed range [2, 100000]");
+}
+
+TEST_F(RunTest, ResumingNeverCreatesTheDirectory) {
+  EXPECT_THROW(EvolutionRun(SmallRun(), Dir("absent"), StartMode::kResume, 2), std::runtime_error);
+  EXPECT_FALSE(fs::exists(Dir("absent")));
+}
+
+TEST_F(RunTest, AForceStoppedBeforeItsFirstCheckpointIsRecovered) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, 2).Run();
+  const auto old_run = RunFileContents(Dir("a"));
+  // stopped while setting the old run aside: half of it in replaced.partial/
+  fs::create_directory(Dir("a") + "/replaced.partial");
+  for (const char* name : {"checkpoint.json", "evaluations.csv"}) {
+    fs::rename(Dir("a") + "/" + name, Dir("a") + "/replaced.partial/" + name);
+  }
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2);  // moved back first
+  EXPECT_EQ(RunFileContents(Dir("a")), old_run);
+  EXPECT_FALSE(fs::exists(Dir("a") + "/replaced.partial"));
+
+  // stopped after setting it aside, before the new run's first checkpoint
+  fs::create_directory(Dir("a") + "/replaced");
+  for (const std::string& name : RunFiles::Names()) {
+    fs::rename(Dir("a") + "/" + name, Dir("a") + "/replaced/" + name);
+  }
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("fresh"), StartMode::kNew, 2);
+  fs::copy_file(Dir("fresh") + "/config.json", Dir("a") + "/config.json");
+  try {
+    EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2);
+    FAIL() << "resumed a stub, hiding the run it replaces";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a --force was stopped"), std::string::npos) << e.what();
+  }
+  // --force again: the stub goes, the old run stays aside until the new checkpoint
+  {
+    EvolutionRun forced(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kForce, 2);
+    EXPECT_EQ(ReadFile(Dir("a") + "/replaced/evaluations.csv"), old_run.at("evaluations.csv"));
+  }
+  EXPECT_EQ(RunFileContents(Dir("a")), old_run);
+}
+
+TEST_F(RunTest, StaleTemporaryFilesOfKilledWritersAreRemoved) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  std::ofstream(Dir("a") + "/checkpoint.json.tmp.999999999") << "{";
+  std::ofstream(Dir("a") + "/notes.tmp.txt") << "mine";
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2).Run();
+  EXPECT_FALSE(fs::exists(Dir("a") + "/checkpoint.json.tmp.999999999"));
+  EXPECT_TRUE(fs::exists(Dir("a") + "/notes.tmp.txt"));
 }
 
 TEST_F(RunTest, ResumingWithOtherSettingsIsRefused) {
@@ -161,6 +418,7 @@ TEST_F(RunTest, ResumingWithOtherSettingsIsRefused) {
     EXPECT_NE(std::string(e.what()).find("seed"), std::string::npos) << e.what();
   }
   EXPECT_THROW(EvolutionRun(SmallRun(), Dir("nothing-here"), StartMode::kResume, 2), std::runtime_error);
+  EXPECT_FALSE(fs::exists(Dir("nothing-here")));
 }
 
 TEST_F(RunTest, AnUnwritableDirectoryIsAClearError) {

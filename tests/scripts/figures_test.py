@@ -154,6 +154,14 @@ def make_run_dir(root):
     return run_dir
 
 
+def load_script():
+    """scripts/figures.py as a module."""
+    spec = importlib.util.spec_from_file_location("figures", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 def write_json(path, obj):
     """Dump obj as JSON to path."""
     with open(path, "w") as f:
@@ -304,14 +312,92 @@ class FiguresTest(unittest.TestCase):
         stderr = self.run_script(expect_rc=1)
         self.assertIn("walks.json: 'biped.frames.com' has 450 entries", stderr)
 
+    def test_a_full_disk_is_one_line_and_the_traceback_is_logged(self):
+        self.run_script()                       # earlier figures, which must survive
+        with open(os.path.join(self.fig_dir, "fig4a.png"), "rb") as f:
+            earlier = f.read()
+        driver = ("import errno, sys, matplotlib.figure\n"
+                  f"sys.path.insert(0, {os.path.dirname(SCRIPT)!r})\n"
+                  "import figures\n"
+                  "def full(self, fname, **kwargs):\n"
+                  "    with open(fname, 'wb') as f:\n"
+                  "        f.write(b'half a figure')\n"
+                  "    raise OSError(errno.ENOSPC, 'No space left on device')\n"
+                  "matplotlib.figure.Figure.savefig = full\n"
+                  f"sys.exit(figures.main([{self.run_dir!r}]))\n")
+        proc = subprocess.run([sys.executable, "-c", driver], text=True, capture_output=True,
+                              timeout=300)
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        lines = proc.stderr.strip().splitlines()
+        self.assertEqual(len(lines), 1, proc.stderr)
+        self.assertIn("fig4a", lines[0])
+        self.assertIn("No space left on device", lines[0])
+        log = os.path.join(self.fig_dir, "figures.log")
+        self.assertIn(log, lines[0])
+        with open(log) as f:
+            self.assertIn("Traceback", f.read())
+        with open(os.path.join(self.fig_dir, "fig4a.png"), "rb") as f:
+            self.assertEqual(f.read(), earlier, "a failed write replaced an earlier figure")
+        self.assertEqual([n for n in os.listdir(self.fig_dir) if ".tmp." in n], [])
+        self.run_script()                       # the next success removes the log
+        self.assertFalse(os.path.exists(log))
+
     def test_font_sizes_are_at_least_8_pt(self):
-        spec = importlib.util.spec_from_file_location("figures", SCRIPT)
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
+        module = load_script()
         sizes = {k: v for k, v in module.STYLE.items() if k.endswith("size")}
         self.assertTrue(sizes)
         for key, size in sizes.items():
             self.assertGreaterEqual(size, 8, key)
+
+
+class DrawnFiguresTest(unittest.TestCase):
+    """Inspects the figures as drawn, before saving, of one synthetic reproduction."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        run_dir = make_run_dir(cls.tmp.name)
+        module = load_script()
+        cls.figs = {}
+        module.save = lambda fig, out_dir, name: cls.figs.__setitem__(name, fig)
+        fig_dir = os.path.join(run_dir, "figures")
+        os.makedirs(fig_dir)
+        with module.plt.rc_context(module.STYLE):
+            module.draw_all(module.load_run_dir(run_dir), fig_dir)
+        cls.plt = module.plt
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.plt.close("all")
+        cls.tmp.cleanup()
+
+    def test_generation_axes_end_at_the_summarys_last_generation(self):
+        figs = self.figs
+        for name in ("fig8", "fig9"):
+            ax = figs[name].axes[0]
+            self.assertEqual(ax.get_xlim(), (0.0, GENERATIONS), name)
+            self.assertIn(GENERATIONS, list(ax.get_xticks()), name)   # a tick at the end
+
+    def test_fig7_legend_swatch_is_visible(self):
+        legend = self.figs["fig7"].axes[0].get_legend()
+        labels = [t.get_text() for t in legend.get_texts()]
+        self.assertIn("tripod gait", labels)
+        handles = getattr(legend, "legend_handles", None) or legend.legendHandles
+        swatch = handles[labels.index("tripod gait")]
+        face = matplotlib.colors.to_rgba(swatch.get_facecolor(), swatch.get_alpha())
+        edge = matplotlib.colors.to_rgba(swatch.get_edgecolor(), swatch.get_alpha())
+        self.assertGreaterEqual(max(face[3], edge[3] if swatch.get_linewidth() > 0 else 0), 0.5,
+                                f"face {face}, edge {edge}")
+
+    def test_fig9_bands_are_outlined_and_hatched_apart(self):
+        bands = self.figs["fig9"].axes[0].collections
+        self.assertEqual(len(bands), len(CASES))
+        hatches = [b.get_hatch() for b in bands]
+        self.assertTrue(all(hatches), hatches)
+        self.assertEqual(len(set(hatches)), len(CASES), hatches)
+        for band in bands:
+            self.assertGreater(band.get_linewidths()[0], 0)
+            self.assertGreaterEqual(band.get_edgecolor()[0][3], 0.5)
 
 
 if __name__ == "__main__":

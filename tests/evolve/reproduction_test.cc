@@ -1,0 +1,93 @@
+#include "evolve/reproduction.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "evolve/files.h"
+#include "tests/temp_dir_test.h"
+
+namespace walkers {
+namespace {
+namespace fs = std::filesystem;
+
+// nine tiny runs: one generation of two children, half a second each
+ReproductionConfig Tiny(std::uint64_t seed = 5) {
+  ReproductionConfig c;
+  c.generations = 1;
+  c.replicates = 1;
+  c.seed = seed;
+  c.ga.population = 2;
+  c.ga.archive_size = 2;
+  c.ga.mutation_children = 1;
+  c.evaluation.duration = 0.5;
+  return c;
+}
+
+class ReproductionTest : public TempDirTest {
+ protected:
+  static std::string Error(const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(2);
+  const std::string summary = ReadFile(ReproductionFiles(Dir("r")).summary_json);
+  EXPECT_NE(Error([&] { Reproduction(Tiny(), Dir("r"), StartMode::kNew); }).find("holds a reproduction already"),
+            std::string::npos);
+  {
+    Reproduction first(Tiny(), Dir("r"), StartMode::kResume);
+    const std::string error = Error([&] { Reproduction(Tiny(), Dir("r"), StartMode::kResume); });
+    EXPECT_NE(error.find("another walkers process (pid " + std::to_string(::getpid()) + ") is writing this reproduction"),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
+  EXPECT_NE(Error([&] { Reproduction(Tiny(), Dir("absent"), StartMode::kResume); }).find("no reproduction to resume"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(Dir("absent")));
+}
+
+TEST_F(ReproductionTest, ForceKeepsTheOldReproductionUntilTheFirstNewCheckpoint) {
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(2);
+  const std::string summary = ReadFile(ReproductionFiles(Dir("r")).summary_json);
+  const std::string evaluations = ReadFile(Dir("r") + "/time-1/evaluations.csv");
+  std::ofstream(Dir("r") + "/notes.txt") << "mine";
+  {
+    Reproduction forced(Tiny(6), Dir("r"), StartMode::kForce);
+    EXPECT_FALSE(fs::exists(Dir("r") + "/summary.json"));
+    EXPECT_EQ(ReadFile(Dir("r") + "/replaced/time-1/evaluations.csv"), evaluations);
+  }
+  // abandoned before it began: the old reproduction is back
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
+  EXPECT_EQ(ReadFile(Dir("r") + "/time-1/evaluations.csv"), evaluations);
+  EXPECT_FALSE(fs::exists(Dir("r") + "/replaced"));
+
+  Reproduction(Tiny(6), Dir("r"), StartMode::kForce).Run(2);
+  EXPECT_FALSE(fs::exists(Dir("r") + "/replaced"));
+  EXPECT_NE(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
+  EXPECT_EQ(ReadFile(Dir("r") + "/notes.txt"), "mine");  // not the reproduction's
+}
+
+TEST_F(ReproductionTest, ValidatesEveryRunsConfigurationFirst) {
+  ReproductionConfig c = Tiny(kMaxSeed);
+  c.replicates = 2;  // replicate 2 would have seed kMaxSeed + 1
+  EXPECT_EQ(Error([&] { Reproduction(c, Dir("r"), StartMode::kNew); }),
+            "seed = 4294967295 is outside its allowed range [0, 4294967294] for 2 replicates (replicate r uses seed + r "
+            "- 1)");
+  c = Tiny();
+  c.ga.population = 1;
+  EXPECT_EQ(Error([&] { Reproduction(c, Dir("r"), StartMode::kNew); }),
+            "population = 1 is outside its allowed range [2, 100000]");
+  EXPECT_FALSE(fs::exists(Dir("r")));
+}
+
+}  // namespace
+}  // namespace walkers
