@@ -66,6 +66,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
       out["ensemble"] = {{"size", opt.ensemble},           {"fitness", ensemble.fitness},
                          {"fitness_median", ensemble.Median()}, {"fitness_min", ensemble.Min()},
                          {"fitness_max", ensemble.Max()},   {"bipeds", ensemble.bipeds},
+                         {"tripods", ensemble.tripods},
                          {"falls", ensemble.falls}};
     }
     std::cout << out.dump() << std::endl;
@@ -78,8 +79,9 @@ int RunEvaluate(const EvaluateOptions& opt) {
                 r.wall_ms, r.cvode_steps, r.rhs_evals, r.preset.c_str());
     if (opt.ensemble > 0) {
       std::printf("ensemble of %d (relative tolerance x 1 + k 1e-4): fitness median %.4f, min %.4f, max %.4f; "
-                  "%d bipeds, %d falls\n",
-                  opt.ensemble, ensemble.Median(), ensemble.Min(), ensemble.Max(), ensemble.bipeds, ensemble.falls);
+                  "%d bipeds, %d tripods, %d falls\n",
+                  opt.ensemble, ensemble.Median(), ensemble.Min(), ensemble.Max(), ensemble.bipeds, ensemble.tripods,
+                  ensemble.falls);
     }
   }
   return 0;

@@ -43,7 +43,8 @@ AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEn
                                : production.Median() >= tight.LowerQuartile() &&
                                      production.Median() <= tight.UpperQuartile();
   const auto majority = [](int count, const FitnessEnsemble& e) { return 2 * count > static_cast<int>(e.fitness.size()); };
-  v.gait_agrees = majority(production.bipeds, production) == majority(tight.bipeds, tight);
+  v.gait_agrees = majority(production.bipeds, production) == majority(tight.bipeds, tight) &&
+                  majority(production.tripods, production) == majority(tight.tripods, tight);
   v.fall_agrees = majority(production.falls, production) == majority(tight.falls, tight);
   return v;
 }
@@ -77,6 +78,7 @@ FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, con
     }
     ensemble.fitness.push_back(r.fitness);
     ensemble.bipeds += r.gait == Gait::kBiped ? 1 : 0;
+    ensemble.tripods += r.gait == Gait::kTripod ? 1 : 0;
     ensemble.falls += r.fell ? 1 : 0;
   }
   return ensemble;

@@ -28,7 +28,8 @@ double Quantile(std::vector<double> values, double p);
 struct FitnessEnsemble {
   std::vector<double> fitness;  // one per member, in order of the perturbation
   int bipeds = 0;
-  int falls = 0;
+  int tripods = 0;
+  int falls = 0;  // a fall has no gait class
 
   // of the fitnesses; 0 for an empty ensemble
   double Median() const { return walkers::Median(fitness); }

@@ -10,7 +10,17 @@
 
 namespace walkers {
 
-const char* GaitName(Gait gait) { return gait == Gait::kTripod ? "tripod" : "biped"; }
+const char* GaitName(Gait gait) {
+  switch (gait) {
+    case Gait::kBiped:
+      return "biped";
+    case Gait::kTripod:
+      return "tripod";
+    case Gait::kNone:
+      break;
+  }
+  return "none";
+}
 
 EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
                           const TickObserver& observer) {
@@ -86,7 +96,9 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
   result.footsteps = controller.footsteps();
   result.trunk_contact_fraction =
       ticks_after_lock > 0 ? static_cast<double>(ticks_in_contact) / static_cast<double>(ticks_after_lock) : 0.0;
-  result.gait = result.trunk_contact_fraction >= kTripodContactFraction ? Gait::kTripod : Gait::kBiped;
+  result.gait = result.fell || !result.failure.empty() ? Gait::kNone
+                : result.trunk_contact_fraction >= kTripodContactFraction ? Gait::kTripod
+                                                                           : Gait::kBiped;
   result.fitness = result.fell || !result.failure.empty() ? -1.0 : result.distance / result.leg_length;
 
   result.integrator_stats = integrator.stats();

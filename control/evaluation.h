@@ -13,9 +13,10 @@
 
 namespace walkers {
 
-enum class Gait { kBiped, kTripod };
+// A walker that fell or failed has no gait class.
+enum class Gait { kBiped, kTripod, kNone };
 
-// "biped", "tripod"
+// "biped", "tripod", "none"
 const char* GaitName(Gait gait);
 
 // A walker whose trunk touches the ground in at least this fraction of the

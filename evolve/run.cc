@@ -97,7 +97,7 @@ std::vector<std::string> KeysOf(const json& object) {
 }
 
 // The gaits files may name.
-constexpr Gait kGaits[] = {Gait::kBiped, Gait::kTripod};
+constexpr Gait kGaits[] = {Gait::kBiped, Gait::kTripod, Gait::kNone};
 
 Gait GaitFromName(const JsonFields& f, const std::string& key) {
   std::vector<std::string> names;

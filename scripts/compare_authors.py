@@ -274,7 +274,7 @@ def run(args):
             "ours_median": e["fitness_median"],
             "ours_min": e["fitness_min"],
             "ours_max": e["fitness_max"],
-            "ours_tripods": e["size"] - e["bipeds"],
+            "ours_tripods": e["tripods"],
             "ours_falls": e["falls"],
             "ensemble": e["size"],
             "ours_ms": ours["wall_ms"],

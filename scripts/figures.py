@@ -69,6 +69,8 @@ CASE_COLOURS = {"free": "tab:green", "time": "tab:orange", "performance": "tab:p
 # fig9's bands, told apart where they overlap
 CASE_HATCHES = {"free": "////", "time": "\\\\\\\\", "performance": "...."}
 GAIT_COLOURS = {"biped": "tab:blue", "tripod": "tab:red"}
+# a generation whose best fell has no gait class (every child fell)
+BEST_GAIT_COLOURS = {**GAIT_COLOURS, "none": "tab:gray"}
 GAIT_CMAPS = {"biped": "Blues", "tripod": "Reds"}
 SINGLE, DOUBLE = 3.5, 7.0          # column widths, inches
 DPI = 200
@@ -164,9 +166,9 @@ def load_generations(path):
             for c in GEN_COLUMNS:
                 value = row[c]
                 if c == "best_gait":
-                    if value not in GAIT_COLOURS:
+                    if value not in BEST_GAIT_COLOURS:
                         raise InputError(f"{path}: line {line}, column {c}: '{value}' "
-                                         "is not 'biped' or 'tripod'")
+                                         "is not 'biped', 'tripod' or 'none'")
                     cols[c].append(value)
                     continue
                 try:
@@ -596,7 +598,7 @@ def fig8(runs, replicates, generations, out_dir):
                 continue
             d = run["data"]
             x, y = d["generation"], d["best_fitness"]
-            colours = [GAIT_COLOURS[gait] for gait in d["best_gait"]]
+            colours = [BEST_GAIT_COLOURS[gait] for gait in d["best_gait"]]
             if len(x) > 1:
                 seg = np.stack([np.column_stack([x[:-1], y[:-1]]),
                                 np.column_stack([x[1:], y[1:]])], axis=1)

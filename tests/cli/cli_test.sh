@@ -48,7 +48,7 @@ expect 0 '^fitness [-0-9.]+ +\(distance' -- evaluate --genome "$genome" --preset
 # evaluate --ensemble: the spread under perturbations of the relative tolerance
 expect 0 '"ensemble":\{"bipeds":[0-9]+,"falls":[0-9]+,"fitness":\[[-0-9.e]+,[-0-9.e]+,[-0-9.e]+\],"fitness_max":' -- \
   evaluate --genome "$genome" --ensemble 3 --json
-expect 0 '^ensemble of 3 .*fitness median [-0-9.]+, min [-0-9.]+, max [-0-9.]+; [0-3] bipeds, [0-3] falls' -- \
+expect 0 '^ensemble of 3 .*fitness median [-0-9.]+, min [-0-9.]+, max [-0-9.]+; [0-3] bipeds, [0-3] tripods, [0-3] falls' -- \
   evaluate --genome "$genome" --ensemble 3
 expect nonzero 'ensemble: value 0 is outside the allowed range \[1, 1000\]' -- evaluate --genome "$genome" --ensemble 0
 

@@ -52,6 +52,15 @@ TEST(EvaluationTest, AnEvolvedBipedWalksFar) {
   EXPECT_LT(r.max_weld_drift, 1e-3);
 }
 
+TEST(EvaluationTest, AWalkerThatFallsHasNoGaitClass) {
+  const Genome g = LoadGenome(std::string(WALKERS_SOURCE_DIR) + "/data/genomes/bench/evolved_faller.json");
+  const EvaluationResult r = Evaluate(g, OriginalPreset());
+  ASSERT_TRUE(r.fell);
+  EXPECT_EQ(r.fitness, -1.0);
+  EXPECT_EQ(r.gait, Gait::kNone);
+  EXPECT_STREQ(GaitName(r.gait), "none");
+}
+
 TEST(EvaluationTest, IsBitIdenticalTwiceAndOnAnotherThread) {
   const Genome g = DefaultGenome();
   const EvaluationResult first = Evaluate(g, OriginalPreset());

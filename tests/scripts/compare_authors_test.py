@@ -42,7 +42,7 @@ n = int(args[args.index("--ensemble") + 1])
 f = 0.9 * g["kx"] / 100
 print(json.dumps({"fitness": f, "wall_ms": 1.0, "ensemble": {
     "fitness_median": f, "fitness_min": f - 1, "fitness_max": f + 1, "size": n,
-    "bipeds": n if g["ky"] <= 8000 else n - 1, "falls": 0}}))
+    "bipeds": n if g["ky"] <= 8000 else n - 1, "tripods": 0 if g["ky"] <= 8000 else 1, "falls": 0}}))
 """
 
 
