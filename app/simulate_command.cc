@@ -49,7 +49,7 @@ int RunSimulate(const SimulateOptions& opt) {
 
   IntegrationStatus status;
   auto record = [&] {
-    if (csv) csv->Write(integrator.time(), integrator.state(), Observe(model, integrator.state(), inputs.welds));
+    if (csv) csv->Write(integrator.time(), integrator.state(), Observe(model, integrator.state()));
   };
   record();
   // one row per 1/30 s, and the final time
