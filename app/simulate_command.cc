@@ -12,7 +12,7 @@
 #include "app/validators.h"
 #include "control/genome.h"
 #include "control/start_pose.h"
-#include "dynamics/integrator.h"
+#include "integration/integrator.h"
 #include "dynamics/observation.h"
 
 namespace walkers::app {

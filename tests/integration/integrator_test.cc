@@ -1,4 +1,4 @@
-#include "dynamics/integrator.h"
+#include "integration/integrator.h"
 
 #include <cmath>
 #include <random>
