@@ -131,6 +131,17 @@ ContactSites BuildContactSites(const Vec3& half_trunk, const Vec3& half_foot, do
   }
   // the knee sits in its foot's plane: the foot's own z is the sphere's
   s.foot_in_knee = SitesNearSphere(foot, 0.0, 0.0, knee_radius);
+  const auto by_x = [](auto* sites) {
+    std::stable_sort(sites->begin(), sites->end(), [](const auto& a, const auto& b) { return a.p.x() < b.p.x(); });
+  };
+  by_x(&s.trunk_ground);
+  by_x(&s.foot_ground);
+  by_x(&s.foot_in_knee);
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    by_x(&s.trunk_in_foot[leg]);
+    by_x(&s.foot_in_trunk[leg]);
+    by_x(&s.trunk_in_knee[leg]);
+  }
   return s;
 }
 

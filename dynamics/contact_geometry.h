@@ -11,7 +11,9 @@
 // [-half_body_z, half_body_z].
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "dynamics/coords.h"
@@ -56,7 +58,9 @@ struct SphereSite {
   double dz2 = 0;         // [m^2]
 };
 
-// Every site the walker's contacts use, built once per body.
+// Every site the walker's contacts use, built once per body. Each list is
+// sorted by p.x, so that a contact law can go straight to the sites within
+// reach of the other body (SitesWithinX).
 struct ContactSites {
   std::vector<GroundSite> trunk_ground;
   std::vector<GroundSite> foot_ground;                   // the same for both feet
@@ -65,6 +69,17 @@ struct ContactSites {
   std::array<std::vector<SphereSite>, kNumLegs> trunk_in_knee;  // trunk sites within reach of knee[leg]
   std::vector<SphereSite> foot_in_knee;  // a foot's sites within reach of its own knee (the same for both legs)
 };
+
+// The sites of a list sorted by p.x whose p.x lies in [lo, hi].
+template <typename Site>
+std::pair<typename std::vector<Site>::const_iterator, typename std::vector<Site>::const_iterator> SitesWithinX(
+    const std::vector<Site>& sites, double lo, double hi) {
+  const auto first = std::lower_bound(sites.begin(), sites.end(), lo,
+                                      [](const Site& site, double x) { return site.p.x() < x; });
+  const auto last =
+      std::upper_bound(first, sites.end(), hi, [](double x, const Site& site) { return x < site.p.x(); });
+  return {first, last};
+}
 
 // z of each leg's plane in the authors' model: the left leg at +leg_z, the right at -leg_z.
 inline double LegZ(int leg, double leg_z) { return leg == kLeft ? leg_z : -leg_z; }

@@ -156,7 +156,10 @@ void MeshOnGround(const FoundationLaw& law, const std::vector<GroundSite>& sites
   const double ca = std::cos(Value(body.angle)), sa = std::sin(Value(body.angle));
   if (Value(body.p.y()) - (std::abs(sa) * half.x() + std::abs(ca) * half.y()) >= 0.0) return;
   const S c = cos(body.angle), s = sin(body.angle);
+  const double y = Value(body.p.y());
   for (const GroundSite& site : sites) {
+    // a site above the ground pushes nothing; tested in plain doubles, before any S arithmetic
+    if (y + sa * site.p.x() + ca * site.p.y() >= 0.0) continue;
     const V2<S> r_site = Rotate<S>(c, s, site.p);
     const S depth = -(body.p.y() + r_site.y());
     if (Value(depth) <= 0.0) continue;
@@ -208,7 +211,23 @@ void MeshInBox(const FoundationLaw& law, double scale, const std::vector<BoxSite
   using std::sin;
   const S cm = cos(m.angle), sm = sin(m.angle);
   const S co = cos(o.angle), so = sin(o.angle);
-  for (const BoxSite& site : sites) {
+  // In plain doubles first, whether a site is inside the other box at all:
+  // in the other box's frame it sits at u0 + R(angle_m - angle_o) site.p.
+  const double cmv = Value(cm), smv = Value(sm), cov = Value(co), sov = Value(so);
+  const double c_rel = cmv * cov + smv * sov, s_rel = smv * cov - cmv * sov;
+  const double dx = Value(m.p.x()) - Value(o.p.x()), dy = Value(m.p.y()) - Value(o.p.y());
+  const double u0x = cov * dx + sov * dy, u0y = -sov * dx + cov * dy;
+  // only sites within the x extent of the other box's bounding box in this
+  // mesh's frame can be inside it
+  const double centre_x = -(cmv * dx + smv * dy);
+  const double reach = std::abs(c_rel) * half_o.x() + std::abs(s_rel) * half_o.y();
+  const auto [first, last] = SitesWithinX(sites, centre_x - reach, centre_x + reach);
+  for (auto it = first; it != last; ++it) {
+    const BoxSite& site = *it;
+    if (std::abs(u0x + c_rel * site.p.x() - s_rel * site.p.y()) >= half_o.x() ||
+        std::abs(u0y + s_rel * site.p.x() + c_rel * site.p.y()) >= half_o.y()) {
+      continue;
+    }
     const V2<S> p = m.p + Rotate<S>(cm, sm, site.p);
     // the site in the other box's frame
     const V2<S> d = p - o.p;
@@ -254,7 +273,15 @@ void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites
   using std::sqrt;
   const S c = cos(m.angle), s = sin(m.angle);
   const double r2 = radius * radius;
-  for (const SphereSite& site : sites) {
+  // In plain doubles first, whether a site is inside the sphere at all: the
+  // sphere's centre in the mesh's frame
+  const double cv = Value(c), sv = Value(s);
+  const double kx = Value(k.p.x()) - Value(m.p.x()), ky = Value(k.p.y()) - Value(m.p.y());
+  const Vec2 centre(cv * kx + sv * ky, -sv * kx + cv * ky);
+  const auto [first, last] = SitesWithinX(sites, centre.x() - radius, centre.x() + radius);
+  for (auto it = first; it != last; ++it) {
+    const SphereSite& site = *it;
+    if ((site.p - centre).squaredNorm() + site.dz2 >= r2) continue;
     const V2<S> p = m.p + Rotate<S>(c, s, site.p);
     const V2<S> d = p - k.p;
     const S d3_squared = d.squaredNorm() + site.dz2;
