@@ -6,7 +6,10 @@
 // scripts/accuracy.py reads to add the two-sample Kolmogorov-Smirnov test
 // (SciPy) for the irregular genomes. Not a Google Benchmark: a measurement.
 //
-//   accuracy [--ensemble N] [--threads T] [--json FILE] [--variant NAME | --tolerances R,Q,V] GENOME|DIR...
+//   accuracy [--ensemble N] [--threads T] [--json FILE] [--variant NAME] [--tolerances R,Q,V] GENOME|DIR...
+//
+// --variant takes one of bench/variants.h; --tolerances after it changes that
+// variant's tolerances.
 //
 // GENOME|DIR: genome files, or folders whose *.json are taken in name order.
 // The default ensemble is 25, the criterion's minimum. Exit status: 0 when
@@ -54,7 +57,7 @@ nlohmann::json ToJson(const FitnessEnsemble& e) {
 
 int Usage(const char* program) {
   std::fprintf(stderr,
-               "usage: %s [--ensemble N] [--threads T] [--json FILE] [--variant NAME | --tolerances R,Q,V] "
+               "usage: %s [--ensemble N] [--threads T] [--json FILE] [--variant NAME] [--tolerances R,Q,V] "
                "GENOME|DIR...\n",
                program);
   return 2;
@@ -112,7 +115,7 @@ Options Parse(const std::vector<std::string>& args) {
       opt.production.integrator.relative_tolerance = ParsePositive("rtol", r);
       opt.production.integrator.absolute_tolerance_position = ParsePositive("atol_position", q);
       opt.production.integrator.absolute_tolerance_velocity = ParsePositive("atol_velocity", v);
-      opt.settings_name = "tolerances " + text;
+      opt.settings_name = (opt.settings_name == "production" ? "" : opt.settings_name + ", ") + "tolerances " + text;
     } else if (a.rfind("--", 0) == 0) {
       throw std::invalid_argument("unknown option " + a);
     } else if (std::filesystem::is_directory(a)) {
