@@ -590,14 +590,19 @@ def fig8(runs, replicates, generations, out_dir):
     """Grid (rows = cases, columns = replicates) of best fitness coloured by gait."""
     grouped = runs_by_case(runs)
     ncols = max(1, replicates)
+    # beyond three replicates: narrow panels, so short titles, the case on each row's
+    # label, the figure wider and the gait colours said in words above
+    compact = ncols > 3
     fig, axes = plt.subplots(len(CASES), ncols, sharex=True, sharey=True, squeeze=False,
-                             figsize=(DOUBLE, 1.15 + 1.45 * len(CASES)),
+                             figsize=(max(DOUBLE, 0.8 + 0.75 * ncols) if compact else DOUBLE,
+                                      1.15 + 1.45 * len(CASES)),
                              layout="constrained")
     for row, case in enumerate(CASES):
         by_rep = {r["replicate"]: r for r in grouped[case]}
         for col in range(ncols):
             ax = axes[row, col]
-            ax.set_title(f"Case {row + 1} ({case}), replicate {col + 1}")
+            ax.set_title(f"rep. {col + 1}" if compact else
+                         f"Case {row + 1} ({case}), replicate {col + 1}")
             run = by_rep.get(col + 1)
             if run is None:
                 ax.text(0.5, 0.5, "no data", ha="center", va="center",
@@ -613,16 +618,23 @@ def fig8(runs, replicates, generations, out_dir):
             else:
                 ax.scatter(x, y, c=colours, s=6)
             ax.grid(alpha=0.3, lw=0.5)
-        axes[row, 0].set_ylabel("best fitness\n(leg lengths)")
+        axes[row, 0].set_ylabel(f"Case {row + 1} ({case})\nbest fitness" if compact
+                                else "best fitness\n(leg lengths)")
     for ax in axes[-1]:
         ax.set_xlabel("generation")
+        if compact:
+            ax.set_xticks([0, generations], ["0", f"{generations:g}"])
     axes[0, 0].set_xlim(0, generations)
     ymax = max([float(np.nanmax(r["data"]["best_fitness"])) for r in runs] + [1.0])
     axes[0, 0].set_ylim(0, 1.05 * ymax)
-    handles = [Line2D([], [], color=c, lw=1.5, label=f"best is a {g}")
-               for g, c in GAIT_COLOURS.items()]
-    axes[0, 0].legend(handles=handles, loc="upper left", frameon=True,
-                      framealpha=0.85, edgecolor="none")
+    if compact:
+        fig.suptitle("best fitness (leg lengths) of every run: blue while the best is a "
+                     "biped, red while it is a tripod")
+    else:
+        handles = [Line2D([], [], color=c, lw=1.5, label=f"best is a {g}")
+                   for g, c in GAIT_COLOURS.items()]
+        axes[0, 0].legend(handles=handles, loc="upper left", frameon=True,
+                          framealpha=0.85, edgecolor="none")
     save(fig, out_dir, "fig8")
 
 

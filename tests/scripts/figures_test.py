@@ -432,6 +432,25 @@ class DrawnFiguresTest(unittest.TestCase):
         bar_tops = [seg[:, 1].max() for seg in right.collections[-1].get_segments()]
         self.assertAlmostEqual(bar_tops[-1], claims.wilson_interval(1, 2)[1], places=12)
 
+    def test_fig8_with_ten_replicates_stays_legible(self):
+        module = load_script()
+        drawn = {}
+        module.save = lambda fig, out_dir, name: drawn.__setitem__(name, fig)
+        with tempfile.TemporaryDirectory() as tmp:
+            inputs = module.load_run_dir(make_run_dir(tmp))
+        runs = [{**run, "replicate": k + 1} for k in range(10) for run in inputs["runs"]
+                if run["replicate"] == 1]
+        with module.plt.rc_context(module.STYLE):
+            module.fig8(runs, 10, GENERATIONS, None)
+        fig = drawn["fig8"]
+        self.assertGreater(fig.get_size_inches()[0], module.DOUBLE)
+        titles = [ax.get_title() for ax in fig.axes]
+        self.assertEqual(len(titles), 30)
+        self.assertEqual(titles[:10], [f"rep. {k}" for k in range(1, 11)])
+        self.assertEqual(fig.axes[10].get_ylabel(), "Case 2 (time)\nbest fitness")
+        self.assertIn("red while it is a tripod", fig._suptitle.get_text())
+        self.plt.close(fig)
+
 
 def load_claims():
     """scripts/claims.py as a module."""
