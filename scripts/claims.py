@@ -68,7 +68,7 @@ from scipy import stats
 ALPHA = 0.05
 CONFIDENCE = 0.95
 SEED = 21                        # every bootstrap and random permutation starts here
-BOOTSTRAP_RESAMPLES = 10_001        # 2.5 % and 97.5 % of 10,000 gaps: on resampled values
+BOOTSTRAP_RESAMPLES = 10_001      # its 2.5 % and 97.5 % points fall on resampled values
 EXACT_SPLITS = 200_000           # C(20, 10) = 184,756: ten replicates a case, exact
 MONTE_CARLO_PERMUTATIONS = 99_999
 BATCH_ELEMENTS = 4_000_000       # numbers per vectorised batch, to bound memory
