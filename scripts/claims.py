@@ -158,8 +158,9 @@ def hodges_lehmann(x, y, axis=-1):
 
 
 def ratio_of_means(x, y, axis=-1):
-    """mean(x) / mean(y), along `axis` (vectorised)."""
-    return np.mean(x, axis=axis) / np.mean(y, axis=axis)
+    """mean(x) / mean(y), along `axis` (vectorised); inf or NaN over a zero mean."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.mean(x, axis=axis) / np.mean(y, axis=axis)
 
 
 def bootstrap_interval(samples, statistic):
@@ -331,6 +332,17 @@ def fmt_generation(g, never=None):
 def n_label(*counts):
     """'10' when every case has 10 runs, else '10/9'."""
     return str(counts[0]) if len(set(counts)) == 1 else "/".join(str(c) for c in counts)
+
+
+def finite_or_null(obj):
+    """obj with every non-finite number (a ratio over a zero, say) made null, for JSON."""
+    if isinstance(obj, dict):
+        return {k: finite_or_null(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [finite_or_null(v) for v in obj]
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    return obj
 
 
 def json_interval(interval):
@@ -776,7 +788,7 @@ def write_claims(run_dir, block):
     summary_path = os.path.join(run_dir, "summary.json")
     with open(summary_path, encoding="utf-8") as f:
         summary = json.load(f)
-    summary["claims"] = block
+    summary["claims"] = finite_or_null(block)
     md_path = os.path.join(run_dir, "summary.md")
     md = ""
     if os.path.isfile(md_path):

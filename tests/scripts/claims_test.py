@@ -615,6 +615,19 @@ class ScriptTest(unittest.TestCase):
         self.assertEqual(status, 1)
         self.assertIn(f"{path}: line 4, column best_gait: 'quadruped'", err)
 
+    def test_a_ratio_over_zero_is_null_in_json(self):
+        runs = {c: list(v) for c, v in PAPER_LIKE.items()}
+        runs["free"] = [(0.0, None, None, 0.0) for _ in range(4)]     # case 1 never moved
+        rep = make_reproduction(os.path.join(self.tmp.name, "zero"), runs)
+        status, _, err = run_script(rep)
+        self.assertEqual(status, 0, err)
+        self.assertEqual(err, "")                  # no warning either
+        with open(os.path.join(rep, "summary.json")) as f:
+            block = json.load(f)["claims"]
+        below = next(f for f in block["findings"] if f["id"] == "case2_below_case1")
+        self.assertIsNone(below["effect"]["value"])
+        self.assertTrue(below["verdict"].startswith("inconclusive"), below["verdict"])
+
     def test_not_a_directory(self):
         status, _, err = run_script(os.path.join(self.tmp.name, "nowhere"))
         self.assertEqual(status, 1)
