@@ -471,6 +471,10 @@ def finding(claim, text, p, effect, direction, null, paper, n, line_numbers, ext
     v = verdict(p, effect["interval"], direction, null, paper, n)
     effect = {**effect, "interval": json_interval(effect["interval"]), "null": null,
               "paper": paper, "paper_direction": "above" if direction > 0 else "below"}
+    if paper is not None and effect["interval"] is not None:
+        low, high = effect["interval"]
+        where = "below" if paper < low else "above" if paper > high else "within"
+        line_numbers += f"; the paper's value lies {where} our interval"
     out = {"id": claim, "claim": text, "verdict": v, "effect": effect,
            "line": f"{text}: **{v}**: {line_numbers}."}
     out.update(extra or {})

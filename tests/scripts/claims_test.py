@@ -452,6 +452,8 @@ class ClaimsOnRunsTest(unittest.TestCase):
         self.assertEqual(below["verdict"], "reproduced")
         self.assertAlmostEqual(below["effect"]["value"], 48.5 / 74.5, places=12)
         self.assertIn("65.1 % of case 1's", below["line"])
+        low, high = below["effect"]["interval"]
+        self.assertEqual(below["line"].endswith("lies within our interval."), low <= 0.66 <= high)
         tripods = found["case2_more_tripods"]
         # 3 of 4 against 0 of 8: C(3,3) C(9,1) / C(12,4) = 9/495 = 1/55
         self.assertAlmostEqual(tripods["test"]["p"], 1 / 55, places=12)
@@ -483,6 +485,8 @@ class ClaimsOnRunsTest(unittest.TestCase):
         self.assertGreater(below["effect"]["interval"][0], 0.66)
         self.assertEqual(below["verdict"], "not reproduced")
         self.assertIn("100.0 % of case 1's", below["line"])
+        self.assertTrue(below["line"].endswith("; the paper's value lies below our interval."),
+                        below["line"])
         tripods = found["case2_more_tripods"]
         self.assertEqual(tripods["test"]["p"], 1.0)
         # 0 of 4 against 0 of 8: Newcombe's upper limit is case 2's Wilson upper, 49 %
