@@ -101,6 +101,13 @@ cmp -s "$tmp/summary.first.json" "$tmp/rep/summary.json" || fail "summary.json c
 cmp -s "$tmp/summary.first.md" "$tmp/rep/summary.md" || fail "summary.md changed when redone"
 grep -q "inconclusive at n = 1" "$tmp/again.txt" || fail "reproduce did not print the verdicts"
 "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" >/dev/null 2>&1 && fail "overwrote a reproduction without --resume"
+# a failing claims script is reported, the figures are drawn all the same, the exit status is 1
+printf 'import sys\nsys.exit(3)\n' >"$tmp/failing_claims.py"
+rm -f "$tmp/rep/figures/fig9.png"
+out=$(WALKERS_PYTHON=$python WALKERS_CLAIMS_SCRIPT="$tmp/failing_claims.py" "$walkers" reproduce --generations 3 \
+      --replicates 1 --out "$tmp/rep" --resume 2>&1) && fail "reproduce succeeded with a failing claims script"
+grep -q "the claims script failed (exit status 3)" <<<"$out" || fail "no message for the failing claims script: $out"
+[ -s "$tmp/rep/figures/fig9.png" ] || fail "the figures were not drawn after the claims script failed"
 
 # --force: an impossible configuration leaves the reproduction intact; a
 # possible one replaces it, and keeps nothing of the old once it has begun
