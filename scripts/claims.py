@@ -7,8 +7,14 @@ Usage:  /usr/bin/python3 scripts/claims.py RUN_DIR
 reproduce` runs it after writing its statistics and before drawing the figures; run
 it by hand only on a reproduction no `walkers` process is writing. It reads
 
-  RUN_DIR/summary.json               the runs, and the paper's values beside ours
+  RUN_DIR/summary.json               the runs (case, replicate, dir, and the best biped's
+                                     and best tripod's fitness of each: best_biped_fitness,
+                                     best_tripod_fitness, null for none), and the paper's
+                                     values beside ours (case3_over_case1_share.paper,
+                                     case2_over_case1_final.paper, biped_over_tripod.paper,
+                                     cases.<case>.paper_tripod_finals_of_3)
   RUN_DIR/<run dir>/generations.csv  every run's best fitness and gait per generation
+                                     (read by scripts/figures.py's checked loader)
 
 and adds to them (replacing what an earlier run of it added)
 
@@ -48,7 +54,7 @@ Statistics (SciPy does the work; nothing random is left unseeded):
     (the area under the mean curves). The share itself is a poor test statistic: when
     the replicates' curves keep their order, shuffled labels give shares near 0 or 1.
   * The best biped against the best tripod: their ratio over all runs, with a
-    bootstrap of the runs; the sign test (scipy.stats.binomtest) of "a run's best
+    bootstrap of the runs as pairs (resamples without a tripod left out); the sign test (scipy.stats.binomtest) of "a run's best
     biped walks further than its best tripod" over the runs that have both.
   * Time to a biped: the generation of a run's first biped best, and that from which
     its best is a biped to the end ("for good"); a run that ends otherwise never
