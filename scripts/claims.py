@@ -527,8 +527,8 @@ def claim_case3_leads_generations(rep):
     interval = share_interval(a, b)
     generations = common_curves(a, b)[0].shape[1]
     numbers = (f"{100 * share:.1f} % of {generations} generations "
-               f"{fmt_interval(interval, '{:.1f}', 100, ' %')}; the best fitness averaged "
-               f"over the generations is {area:+.2f} higher in case 3, one-sided permutation "
+               f"{fmt_interval(interval, '{:.1f}', 100, ' %')}; best fitness averaged over the "
+               f"generations, case 3 − case 1: {area:+.2f}, one-sided permutation "
                f"p = {fmt_p(p)}")
     test = {"name": "permutation test of the replicates' best fitness averaged over the "
                     "generations, case 3 - case 1, one-sided", "statistic": area, "p": p,
