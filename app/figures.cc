@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -14,10 +15,14 @@ std::string PythonInterpreter() {
   return "python3";
 }
 
-int DrawFigures(const std::string& dir) {
-  const std::string script = std::getenv("WALKERS_FIGURES_SCRIPT") ? std::getenv("WALKERS_FIGURES_SCRIPT")
-                                                                   : WALKERS_SOURCE_DIR "/scripts/figures.py";
-  // no shell: the directory's name is passed as it is
+namespace {
+
+// Runs $ENV_NAME, else the repository's scripts/NAME, on DIR; its exit status.
+int RunScript(const char* env_name, const char* name, const std::string& dir) {
+  const std::string script = std::getenv(env_name) ? std::getenv(env_name)
+                                                   : std::string(WALKERS_SOURCE_DIR "/scripts/") + name;
+  // what this process printed goes first; no shell: the directory's name is passed as it is
+  std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0) return -1;
   if (pid == 0) {
@@ -29,5 +34,11 @@ int DrawFigures(const std::string& dir) {
   if (::waitpid(pid, &status, 0) < 0) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+}  // namespace
+
+int DrawFigures(const std::string& dir) { return RunScript("WALKERS_FIGURES_SCRIPT", "figures.py", dir); }
+
+int WriteClaims(const std::string& dir) { return RunScript("WALKERS_CLAIMS_SCRIPT", "claims.py", dir); }
 
 }  // namespace walkers::app

@@ -1,4 +1,5 @@
-// Running the figure script (scripts/figures.py) on a reproduction directory.
+// Running the analysis scripts on a reproduction directory: the claims
+// (scripts/claims.py) and the figures (scripts/figures.py).
 #pragma once
 
 #include <string>
@@ -9,7 +10,13 @@ namespace walkers::app {
 // matplotlib), else python3 on the PATH.
 std::string PythonInterpreter();
 
-// Runs the script on DIR; returns its exit status (0 on success).
+// Runs the figure script ($WALKERS_FIGURES_SCRIPT, else scripts/figures.py) on
+// DIR; returns its exit status (0 on success).
 int DrawFigures(const std::string& dir);
+
+// Runs the claims script ($WALKERS_CLAIMS_SCRIPT, else scripts/claims.py) on
+// DIR: the paper's claims tested, into summary.json and summary.md; returns its
+// exit status (0 on success).
+int WriteClaims(const std::string& dir);
 
 }  // namespace walkers::app

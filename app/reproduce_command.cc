@@ -76,12 +76,19 @@ int RunReproduce(const ReproduceOptions& opt) {
     std::printf("best tripod %.3f (%s %s)\n", summary.best_tripod->fitness, summary.best_tripod->run.c_str(),
                 summary.best_tripod->id.c_str());
   }
+  // the claims first: the figures may fail without taking the verdicts with them
+  const int claims = WriteClaims(opt.out);
+  if (claims != 0) {
+    std::fprintf(stderr, "walkers: error: the claims script failed (exit status %d); %s/summary.md has no verdicts\n",
+                 claims, opt.out.c_str());
+  }
   const int status = DrawFigures(opt.out);
   if (status != 0) {
     std::fprintf(stderr, "walkers: error: the figure script failed (exit status %d); the statistics are in %s/summary.md\n",
                  status, opt.out.c_str());
     return 1;
   }
+  if (claims != 0) return 1;
   std::printf("summary: %s/summary.md, figures: %s/figures/\n", opt.out.c_str(), opt.out.c_str());
   return 0;
 }

@@ -141,6 +141,9 @@ ReproductionSummary Reproduction::Run(int threads, const ReproductionObserver& o
 ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir) {
   const std::vector<PlannedRun> plan = PlanRuns(config);
   std::vector<RunData> data;
+  const auto fitness_or_null = [](const std::optional<EvaluatedSummary>& best) {
+    return best ? json(best->fitness) : json(nullptr);
+  };
   json runs = json::array();
   json gallery = json::array();
   for (const PlannedRun& run : plan) {
@@ -170,6 +173,9 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
                     {"seed", run.config.seed},
                     {"final_best_fitness", data.back().best_fitness.back()},
                     {"final_best_gait", data.back().best_is_tripod.back() ? "tripod" : "biped"},
+                    // the best of all the run's evaluations, by gait (null: none that did not fall)
+                    {"best_biped_fitness", fitness_or_null(data.back().best_biped)},
+                    {"best_tripod_fitness", fitness_or_null(data.back().best_tripod)},
                     {"evaluations", data.back().evaluations},
                     {"evaluation_seconds", data.back().evaluation_seconds}});
   }
@@ -201,7 +207,7 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
                                                   std::to_string(config.generations) + " generations, preset " +
                                                   config.preset.name);
   md += "\n## Figures\n\n";
-  for (const char* fig : {"fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9"}) {
+  for (const char* fig : {"fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals"}) {
     md += std::string("![") + fig + "](figures/" + fig + ".png)\n";
   }
   WriteFileAtomically(files.summary_md, md);

@@ -12,6 +12,6 @@ again=()
 ./build/app/walkers reproduce --generations 30 --replicates 1 --out runs/demo "${again[@]}"
 ./build/app/walkers replay --genome runs/demo/performance-1/best.json --out runs/demo/walk.html --force
 echo
-echo "statistics: runs/demo/summary.md"
-echo "figures:    runs/demo/figures/ (fig4a ... fig9, PNG and SVG)"
+echo "statistics: runs/demo/summary.md (with the claims' verdicts)"
+echo "figures:    runs/demo/figures/ (fig4a ... fig9, finals; PNG and SVG)"
 echo "animation:  runs/demo/walk.html (open it in a browser)"

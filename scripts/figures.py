@@ -3,8 +3,8 @@
 
 Usage:  /usr/bin/python3 scripts/figures.py RUN_DIR
 
-(Debian's /usr/bin/python3 with python3-matplotlib; needs only the standard library,
-numpy and matplotlib.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.svg for
+(Debian's /usr/bin/python3 with python3-matplotlib and python3-scipy; needs the
+standard library, numpy, matplotlib, and scipy through scripts/claims.py.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.svg for
 
   fig4a  distance walked (leg lengths) over 15 s, best biped vs best tripod
   fig4b  filmstrip of both walkers over the first 5 s (a snapshot every 0.5 s)
@@ -12,7 +12,9 @@ numpy and matplotlib.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.sv
   fig6   relative CoG height and CoG velocities (leg lengths, leg lengths/s)
   fig7   body, femur and tibia length per generation of the best biped's run
   fig8   best fitness per generation of every run, coloured by gait class
-  fig9   mean +- standard deviation of best fitness per case
+  fig9   mean best fitness per case with its bootstrap 95 % band; each replicate faintly
+  finals final best fitness per case (points and box) and the share of runs whose
+         final best is a tripod, with Wilson 95 % intervals (not in the paper)
 
 Inputs (formats as written by the `walkers` program):
   RUN_DIR/summary.json              required
@@ -39,8 +41,9 @@ on stderr naming the figure and the cause; the traceback goes to
 RUN_DIR/figures/figures.log (removed again by the next run that succeeds), and the
 exit status is 1.
 
-fig9 uses the sample standard deviation (ddof = 1) over the replicates; with one
-replicate no band is drawn. Replicates of unequal length are averaged over the
+fig9's band is the percentile bootstrap 95 % interval of the mean over the replicates
+(scripts/claims.py: mean_band, seeded), drawn at up to BAND_POINTS generations; with
+one replicate no band is drawn. Replicates of unequal length are averaged over the
 generations they all have (warning printed). The generation axes of fig8 and fig9
 end at the number of generations summary.json names ("generations"; else the
 longest run's).
@@ -61,6 +64,9 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import claims  # noqa: E402  - the statistics: bootstrap bands, Wilson intervals
 
 CASES = ("free", "time", "performance")
 CASE_LABELS = {"free": "Case 1 free", "time": "Case 2 time-constrained",
@@ -89,6 +95,7 @@ STYLE = {"font.size": 8, "axes.titlesize": 8, "axes.labelsize": 8,
          "legend.frameon": False, "svg.hashsalt": "figures", "figure.dpi": DPI,
          "hatch.linewidth": 0.4}
 LOG_NAME = "figures.log"
+BAND_POINTS = 400                  # fig9's band: bootstrapped at this many generations at most
 
 
 class InputError(Exception):
@@ -583,14 +590,19 @@ def fig8(runs, replicates, generations, out_dir):
     """Grid (rows = cases, columns = replicates) of best fitness coloured by gait."""
     grouped = runs_by_case(runs)
     ncols = max(1, replicates)
+    # beyond three replicates: narrow panels, so short titles, the case on each row's
+    # label, the figure wider and the gait colours said in words above
+    compact = ncols > 3
     fig, axes = plt.subplots(len(CASES), ncols, sharex=True, sharey=True, squeeze=False,
-                             figsize=(DOUBLE, 1.15 + 1.45 * len(CASES)),
+                             figsize=(max(DOUBLE, 0.8 + 0.75 * ncols) if compact else DOUBLE,
+                                      1.15 + 1.45 * len(CASES)),
                              layout="constrained")
     for row, case in enumerate(CASES):
         by_rep = {r["replicate"]: r for r in grouped[case]}
         for col in range(ncols):
             ax = axes[row, col]
-            ax.set_title(f"Case {row + 1} ({case}), replicate {col + 1}")
+            ax.set_title(f"rep. {col + 1}" if compact else
+                         f"Case {row + 1} ({case}), replicate {col + 1}")
             run = by_rep.get(col + 1)
             if run is None:
                 ax.text(0.5, 0.5, "no data", ha="center", va="center",
@@ -606,43 +618,55 @@ def fig8(runs, replicates, generations, out_dir):
             else:
                 ax.scatter(x, y, c=colours, s=6)
             ax.grid(alpha=0.3, lw=0.5)
-        axes[row, 0].set_ylabel("best fitness\n(leg lengths)")
+        axes[row, 0].set_ylabel(f"Case {row + 1} ({case})\nbest fitness" if compact
+                                else "best fitness\n(leg lengths)")
     for ax in axes[-1]:
         ax.set_xlabel("generation")
+        if compact:
+            ax.set_xticks([0, generations], ["0", f"{generations:g}"])
     axes[0, 0].set_xlim(0, generations)
     ymax = max([float(np.nanmax(r["data"]["best_fitness"])) for r in runs] + [1.0])
     axes[0, 0].set_ylim(0, 1.05 * ymax)
-    handles = [Line2D([], [], color=c, lw=1.5, label=f"best is a {g}")
-               for g, c in GAIT_COLOURS.items()]
-    axes[0, 0].legend(handles=handles, loc="upper left", frameon=True,
-                      framealpha=0.85, edgecolor="none")
+    if compact:
+        fig.suptitle("best fitness (leg lengths) of every run: blue while the best is a "
+                     "biped, red while it is a tripod")
+    else:
+        handles = [Line2D([], [], color=c, lw=1.5, label=f"best is a {g}")
+                   for g, c in GAIT_COLOURS.items()]
+        axes[0, 0].legend(handles=handles, loc="upper left", frameon=True,
+                          framealpha=0.85, edgecolor="none")
     save(fig, out_dir, "fig8")
 
 
-def case_stats(case, runs):
-    """(generations, mean, std) of best_fitness over a case's replicates."""
+def case_curves(case, runs):
+    """(generations, replicates x generations best fitness) of a case, cut to the
+    generations all its replicates have."""
     n = min(len(r["data"]["best_fitness"]) for r in runs)
     if any(len(r["data"]["best_fitness"]) != n for r in runs):
         warn(f"fig9: {case} runs have different lengths; using their first {n} "
              "generations")
-    y = np.stack([r["data"]["best_fitness"][:n] for r in runs])
-    std = y.std(axis=0, ddof=1) if len(runs) > 1 else np.zeros(n)
-    return runs[0]["data"]["generation"][:n], y.mean(axis=0), std
+    return runs[0]["data"]["generation"][:n], np.stack([r["data"]["best_fitness"][:n]
+                                                        for r in runs])
 
 
 def fig9(runs, generations, out_dir):
-    """Mean +- sample standard deviation of best fitness per generation, per case."""
+    """Mean best fitness per generation and case, its bootstrap 95 % band, and each
+    replicate's curve faintly."""
     fig, ax = plt.subplots(figsize=(SINGLE, 3.1), layout="constrained")
     for case, group in runs_by_case(runs).items():
         colour = CASE_COLOURS[case]
         if not group:
             ax.plot([], [], color=colour, label=f"{CASE_LABELS[case]} (no data)")
             continue
-        g, mean, std = case_stats(case, group)
-        ax.plot(g, mean, color=colour, label=f"{CASE_LABELS[case]} (n = {len(group)})")
-        if len(group) > 1:
+        g, y = case_curves(case, group)
+        for curve in y:
+            ax.plot(g, curve, color=colour, lw=0.4, alpha=0.35)
+        ax.plot(g, y.mean(axis=0), color=colour, label=f"{CASE_LABELS[case]} (n = {len(group)})")
+        at = np.unique(np.linspace(0, len(g) - 1, min(len(g), BAND_POINTS)).round().astype(int))
+        band = claims.mean_band(y[:, at])
+        if band is not None:
             # outlined and hatched, so that overlapping bands stay apart
-            ax.fill_between(g, mean - std, mean + std, lw=0.6, ls="--",
+            ax.fill_between(g[at], band[0], band[1], lw=0.6, ls="--",
                             facecolor=matplotlib.colors.to_rgba(colour, 0.15),
                             edgecolor=matplotlib.colors.to_rgba(colour, 0.8),
                             hatch=CASE_HATCHES[case])
@@ -651,8 +675,59 @@ def fig9(runs, generations, out_dir):
     ax.set_xlim(0, generations)
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3, lw=0.5)
-    legend_above(ax, title="best fitness, mean ± s.d. over replicates")
+    legend_above(ax, title="best fitness: mean, bootstrap 95 % band, replicates")
     save(fig, out_dir, "fig9")
+
+
+def finals(runs, out_dir):
+    """Left: each run's final best fitness per case, points over a box. Right: the
+    share of each case's runs whose final best is a tripod, Wilson 95 % interval."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(DOUBLE, 2.8), layout="constrained",
+                                      gridspec_kw={"width_ratios": (3, 2)})
+    grouped = runs_by_case(runs)
+    names = ["{} {}\n{}".format(*CASE_LABELS[c].split(" ", 2)) for c in grouped]
+    spread = np.random.default_rng(claims.SEED)       # the points' sideways jitter
+    for x, (case, group) in enumerate(grouped.items()):
+        colour = CASE_COLOURS[case]
+        if not group:
+            left.text(x, 0.5, "no data", ha="center", va="center", color="0.4",
+                      transform=left.get_xaxis_transform())
+            right.text(x, 0.5, "no data", ha="center", va="center", color="0.4",
+                       transform=right.get_xaxis_transform())
+            continue
+        final = np.array([r["data"]["best_fitness"][-1] for r in group])
+        tripod = np.array([r["data"]["best_gait"][-1] == "tripod" for r in group])
+        left.boxplot(final, positions=[x], widths=0.5, showfliers=False,
+                     medianprops={"color": colour}, boxprops={"color": "0.4"},
+                     whiskerprops={"color": "0.4"}, capprops={"color": "0.4"})
+        jitter = x + spread.uniform(-0.12, 0.12, len(final))
+        for gait, marker in (("biped", "o"), ("tripod", "^")):
+            mine = tripod if gait == "tripod" else ~tripod
+            left.scatter(jitter[mine], final[mine], s=14, marker=marker, zorder=3,
+                         facecolor=matplotlib.colors.to_rgba(colour, 0.6),
+                         edgecolor=GAIT_COLOURS[gait], lw=0.8)
+        k, n = int(tripod.sum()), len(group)
+        low, high = claims.wilson_interval(k, n)
+        right.bar(x, k / n, width=0.6, color=matplotlib.colors.to_rgba(colour, 0.5),
+                  edgecolor=colour)
+        right.errorbar(x, k / n, yerr=[[k / n - low], [high - k / n]], color="k", lw=0.8,
+                       capsize=3)
+        right.text(x, high + 0.03, f"{k} of {n}", ha="center", va="bottom")
+    # the narrow panel names the cases by number only
+    for ax, labels in ((left, names), (right, [n.split("\n")[0] for n in names])):
+        ax.set_xticks(range(len(grouped)), labels)
+        ax.set_xlim(-0.6, len(grouped) - 0.4)
+        ax.grid(alpha=0.3, lw=0.5, axis="y")
+    left.set_ylabel("final best fitness (leg lengths)")
+    left.set_ylim(bottom=0)
+    left.legend(handles=[Line2D([], [], ls="", marker=m, markerfacecolor="none",
+                                markeredgecolor=GAIT_COLOURS[g], label=f"ends as a {g}")
+                         for g, m in (("biped", "o"), ("tripod", "^"))],
+                loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=2, borderaxespad=0.0)
+    right.set_ylabel("runs ending as a tripod")
+    right.set_ylim(0, 1.15)
+    right.set_title("share, Wilson 95 % interval", loc="left")
+    save(fig, out_dir, "finals")
 
 
 # ----------------------------------------------------------------------------- main
@@ -697,14 +772,16 @@ def draw_all(inputs, out_dir):
     else:
         drawn("fig5", fig5, gallery, out_dir)
     if not runs:
-        warn("summary.json lists no runs: skipping fig7, fig8, fig9")
+        warn("summary.json lists no runs: skipping fig7, fig8, fig9, finals")
         return
     for case, group in runs_by_case(runs).items():
         if not group:
-            warn(f"summary.json: no runs for case '{case}': fig8 and fig9 say 'no data'")
+            warn(f"summary.json: no runs for case '{case}': fig8, fig9 and finals say "
+                 "'no data'")
     drawn("fig7", fig7, runs, walks, out_dir)
     drawn("fig8", fig8, runs, inputs["replicates"], inputs["generations"], out_dir)
     drawn("fig9", fig9, runs, inputs["generations"], out_dir)
+    drawn("finals", finals, runs, out_dir)
 
 
 def main(argv=None):

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# A tiny reproduction (3 generations, 1 replicate) must write every file; the
+# A tiny reproduction (3 generations, 1 replicate) must write every file and the
+# claims' verdicts, the same when redone; the
 # replay command's HTML must load in headless Chromium without console errors
 # and draw its canvas, and its SVG must parse.
 # Usage: reproduce_test.sh WALKERS_BINARY SOURCE_DIR PYTHON
@@ -25,7 +26,7 @@ for run in free-1 time-1 performance-1; do
     [ -s "$tmp/rep/$run/$f" ] || fail "no $run/$f"
   done
 done
-for fig in fig4a fig4b fig5 fig6 fig7 fig8 fig9; do
+for fig in fig4a fig4b fig5 fig6 fig7 fig8 fig9 finals; do
   for ext in png svg; do
     [ -s "$tmp/rep/figures/$fig.$ext" ] || fail "no figures/$fig.$ext"
   done
@@ -38,6 +39,34 @@ for key in ("cases", "case3_over_case1_share", "case2_over_case1_final", "biped_
 assert set(s["cases"]) == {"free", "time", "performance"}, s["cases"].keys()
 assert len(s["runs"]) == 3
 PY
+# the claims: a verdict line each, in summary.json and summary.md, whose numbers agree
+# with the program's own statistics; at one replicate nothing can be reproduced
+"$python" - "$tmp/rep" <<'PY' || fail "the claims block does not hold or does not match"
+import json, sys
+rep = sys.argv[1]
+s = json.load(open(rep + "/summary.json"))
+md = open(rep + "/summary.md", encoding="utf-8").read()
+findings = {f["id"]: f for f in s["claims"]["findings"]}
+assert len(findings) == 6, findings.keys()
+for f in findings.values():
+    assert f["verdict"] in ("reproduced", "not reproduced", "inconclusive at n = 1"), f
+    assert f"- {f['line']}\n" in md, f["line"]
+assert findings["case3_above_case1"]["verdict"] == "inconclusive at n = 1"
+assert md.index("## Claims") < md.index("## Figures"), "no Claims section before the figures"
+def close(a, b):
+    return abs(a - b) <= 1e-12 * max(1.0, abs(b))
+assert close(findings["case3_leads_generations"]["effect"]["value"], s["case3_over_case1_share"]["value"])
+assert close(findings["case2_below_case1"]["effect"]["value"], s["case2_over_case1_final"]["value"])
+if s["biped_over_tripod"]["value"] is not None:
+    assert close(findings["biped_above_tripod"]["effect"]["value"], s["biped_over_tripod"]["value"] - 1)
+for case, c in s["claims"]["cases"].items():
+    assert c["tripod_finals"]["tripods"] == s["cases"][case]["tripod_finals"], case
+for run in s["runs"]:
+    for gait in ("biped", "tripod"):
+        assert f"best_{gait}_fitness" in run, run
+PY
+cp "$tmp/rep/summary.json" "$tmp/summary.first.json"
+cp "$tmp/rep/summary.md" "$tmp/summary.first.md"
 # the gallery: every run's final best, and its best tripod when the final best is a biped
 "$python" - "$tmp/rep" <<'PY' || fail "gallery.json does not match the runs"
 import csv, json, sys
@@ -67,7 +96,18 @@ grep -q "rep: another walkers process (pid $again) is writing this reproduction"
   fail "the second reproduce was not refused naming the first: $second"
 wait $again || { cat "$tmp/again.txt"; fail "resuming the finished reproduction failed"; }
 grep -q "done already" "$tmp/again.txt" || fail "resume did not find the runs done"
+# the statistics and claims again: the same bits (the bootstrap is seeded)
+cmp -s "$tmp/summary.first.json" "$tmp/rep/summary.json" || fail "summary.json changed when redone"
+cmp -s "$tmp/summary.first.md" "$tmp/rep/summary.md" || fail "summary.md changed when redone"
+grep -q "inconclusive at n = 1" "$tmp/again.txt" || fail "reproduce did not print the verdicts"
 "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" >/dev/null 2>&1 && fail "overwrote a reproduction without --resume"
+# a failing claims script is reported, the figures are drawn all the same, the exit status is 1
+printf 'import sys\nsys.exit(3)\n' >"$tmp/failing_claims.py"
+rm -f "$tmp/rep/figures/fig9.png"
+out=$(WALKERS_PYTHON=$python WALKERS_CLAIMS_SCRIPT="$tmp/failing_claims.py" "$walkers" reproduce --generations 3 \
+      --replicates 1 --out "$tmp/rep" --resume 2>&1) && fail "reproduce succeeded with a failing claims script"
+grep -q "the claims script failed (exit status 3)" <<<"$out" || fail "no message for the failing claims script: $out"
+[ -s "$tmp/rep/figures/fig9.png" ] || fail "the figures were not drawn after the claims script failed"
 
 # --force: an impossible configuration leaves the reproduction intact; a
 # possible one replaces it, and keeps nothing of the old once it has begun

@@ -1,9 +1,12 @@
 #include "evolve/reproduction.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
 #include "tests/temp_dir_test.h"
@@ -87,6 +90,39 @@ TEST_F(ReproductionTest, ValidatesEveryRunsConfigurationFirst) {
   EXPECT_EQ(Error([&] { Reproduction(c, Dir("r"), StartMode::kNew); }),
             "population = 1 is outside its allowed range [2, 100000]");
   EXPECT_FALSE(fs::exists(Dir("r")));
+}
+
+// the claims script's input: each run's best biped and best tripod over all its
+// evaluations (those that did not fall), null for none
+TEST_F(ReproductionTest, SummaryListsEachRunsBestBipedAndBestTripod) {
+  ReproductionConfig c = Tiny();
+  c.generations = 2;
+  c.evaluation.duration = 2.0;
+  Reproduction(c, Dir("r"), StartMode::kNew).Run(2);
+  const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
+  ASSERT_EQ(summary["runs"].size(), 3u);
+  int found = 0;
+  for (const nlohmann::json& run : summary["runs"]) {
+    const std::string path = Dir("r") + "/" + run["dir"].get<std::string>() + "/evaluations.csv";
+    CsvReader rows(ReadFile(path), path);
+    const int fitness = rows.Column("fitness"), fell = rows.Column("fell"), gait = rows.Column("gait");
+    std::optional<double> best_biped, best_tripod;
+    while (rows.Next()) {
+      if (rows.fields()[fell] == "1") continue;
+      std::optional<double>& best = rows.fields()[gait] == "tripod" ? best_tripod : best_biped;
+      best = std::max(best.value_or(-1e300), rows.Number(fitness));
+    }
+    for (const auto& [key, best] : {std::pair{"best_biped_fitness", best_biped}, std::pair{"best_tripod_fitness", best_tripod}}) {
+      ASSERT_TRUE(run.contains(key)) << key;
+      if (best) {
+        ++found;
+        EXPECT_EQ(run[key].get<double>(), *best) << run["dir"] << " " << key;
+      } else {
+        EXPECT_TRUE(run[key].is_null()) << run["dir"] << " " << key;
+      }
+    }
+  }
+  EXPECT_GT(found, 0);  // not all null
 }
 
 }  // namespace

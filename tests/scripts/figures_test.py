@@ -27,7 +27,7 @@ import matplotlib.image as mpimg  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCRIPT = os.path.join(ROOT, "scripts", "figures.py")
-ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9")
+ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals")
 WALK_FIGS = ("fig4a", "fig4b", "fig6")
 CASES = ("free", "time", "performance")
 REPLICATES, GENERATIONS, FRAMES = 2, 60, 451
@@ -398,6 +398,66 @@ class DrawnFiguresTest(unittest.TestCase):
         for band in bands:
             self.assertGreater(band.get_linewidths()[0], 0)
             self.assertGreaterEqual(band.get_edgecolor()[0][3], 0.5)
+
+    def test_fig9_band_is_the_bootstrap_interval_of_the_mean(self):
+        ax = self.figs["fig9"].axes[0]
+        claims = load_claims()
+        lines = [l for l in ax.get_lines() if len(l.get_xdata())]
+        faint = [l for l in lines if l.get_alpha() is not None and l.get_alpha() < 0.5]
+        means = [l for l in lines if l.get_alpha() is None]
+        self.assertEqual(len(faint), len(CASES) * REPLICATES)     # every replicate, faintly
+        self.assertEqual(len(means), len(CASES))
+        for case, band, mean in zip(CASES, ax.collections, means):
+            curves = np.array([l.get_ydata() for l in faint
+                               if l.get_color() == mean.get_color()])
+            np.testing.assert_allclose(mean.get_ydata(), curves.mean(axis=0))
+            low, high = claims.mean_band(curves)
+            edge = band.get_paths()[0].vertices[:, 1]
+            # the band's outline runs along both limits
+            self.assertTrue(np.isin(np.round(low, 9), np.round(edge, 9)).all(), case)
+            self.assertTrue(np.isin(np.round(high, 9), np.round(edge, 9)).all(), case)
+            self.assertTrue(np.all(low <= curves.mean(axis=0) + 1e-12), case)
+            self.assertTrue(np.any(high - low > 0), case)
+
+    def test_finals_shows_every_final_best_and_the_tripod_shares(self):
+        left, right = self.figs["finals"].axes
+        points = np.concatenate([c.get_offsets()[:, 1] for c in left.collections])
+        self.assertEqual(len(points), len(CASES) * REPLICATES)
+        # synthetic: only performance-2 is a tripod to the end (tripod_until = 60 > 59)
+        heights = [bar.get_height() for bar in right.patches]
+        self.assertEqual(heights, [0.0, 0.0, 0.5])
+        claims = load_claims()
+        texts = [t.get_text() for t in right.texts]
+        self.assertEqual(texts, ["0 of 2", "0 of 2", "1 of 2"])
+        bar_tops = [seg[:, 1].max() for seg in right.collections[-1].get_segments()]
+        self.assertAlmostEqual(bar_tops[-1], claims.wilson_interval(1, 2)[1], places=12)
+
+    def test_fig8_with_ten_replicates_stays_legible(self):
+        module = load_script()
+        drawn = {}
+        module.save = lambda fig, out_dir, name: drawn.__setitem__(name, fig)
+        with tempfile.TemporaryDirectory() as tmp:
+            inputs = module.load_run_dir(make_run_dir(tmp))
+        runs = [{**run, "replicate": k + 1} for k in range(10) for run in inputs["runs"]
+                if run["replicate"] == 1]
+        with module.plt.rc_context(module.STYLE):
+            module.fig8(runs, 10, GENERATIONS, None)
+        fig = drawn["fig8"]
+        self.assertGreater(fig.get_size_inches()[0], module.DOUBLE)
+        titles = [ax.get_title() for ax in fig.axes]
+        self.assertEqual(len(titles), 30)
+        self.assertEqual(titles[:10], [f"rep. {k}" for k in range(1, 11)])
+        self.assertEqual(fig.axes[10].get_ylabel(), "Case 2 (time)\nbest fitness")
+        self.assertIn("red while it is a tripod", fig._suptitle.get_text())
+        self.plt.close(fig)
+
+
+def load_claims():
+    """scripts/claims.py as a module."""
+    spec = importlib.util.spec_from_file_location("claims", os.path.join(ROOT, "scripts", "claims.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 if __name__ == "__main__":
