@@ -24,6 +24,11 @@ inline std::vector<Variant> Variants() {
   add("production", [](EvaluationSettings*) {});
   add("library_vector_ops", [](EvaluationSettings* s) { s->integrator.fixed_size_ops = false; });
   add("adams", [](EvaluationSettings* s) { s->integrator.method = MultistepMethod::kAdams; });
+  add("adams_tolerances_3e-8", [](EvaluationSettings* s) {
+    s->integrator.method = MultistepMethod::kAdams;
+    s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 3e-8;
+    s->integrator.absolute_tolerance_velocity = 3e-6;
+  });
   add("max_order_2", [](EvaluationSettings* s) { s->integrator.max_order = 2; });
   add("max_order_3", [](EvaluationSettings* s) { s->integrator.max_order = 3; });
   add("stability_limit_detection", [](EvaluationSettings* s) { s->integrator.stability_limit_detection = true; });
