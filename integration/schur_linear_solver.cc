@@ -8,6 +8,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include <cmath>
 #include <new>
@@ -16,7 +17,6 @@
 #include "integration/block_matrix18.h"
 #include "dynamics/coords.h"
 #include "integration/fixed_size_ops.h"
-#include "integration/lu_solve9.h"
 
 namespace walkers {
 namespace {
@@ -42,7 +42,7 @@ constexpr double kOffDiagonalTolerance = 1e-12;  // relative to 1 and to gamma
 // Everything the solver keeps between setup and solve: fixed-size Eigen types
 // only, so setup and solve never allocate.
 struct Content {
-  Lu9 schur_lu;                        // P*S = L*U, S = M22 - M21*M11^{-1}*M12
+  Eigen::PartialPivLU<Mat9> schur_lu;  // P*S = L*U, S = M22 - M21*M11^{-1}*M12
   Mat9 m21;                            // lower-left block of M
   Vec9 inverse_d11;                    // 1 / diag(M11)
   Vec9 ratio;                          // diag(M12) / diag(M11)
@@ -109,14 +109,8 @@ int FactorSchurComplement(const Vec9& d11, const Vec9& d12, const Mat9& m21, con
   // i.e. S = M22 - M21 diag(d12 / d11) = M22 + gamma*M21 for D11 = I, D12 = -gamma*I
   c->inverse_d11 = d11.cwiseInverse();
   c->ratio = d12.cwiseProduct(c->inverse_d11);
-  // S goes straight where it is factored, and M21 is kept for the solves, in
-  // one unrolled pass (Eigen would loop over each 9x9 behind a call)
-  Mat9& schur = c->schur_lu.lu;
-  #pragma GCC unroll 9
-  for (int j = 0; j < kBlock; ++j) {
-    c->m21.col(j) = m21.col(j);
-    schur.col(j) = m22.col(j) - m21.col(j) * c->ratio(j);
-  }
+  c->m21 = m21;  // kept for the solves
+  const Mat9 schur = m22 - m21 * c->ratio.asDiagonal();
 
   // a non-finite Jacobian (e.g. an overflowing right-hand side) may go away
   // with a smaller step: recoverable
@@ -125,12 +119,15 @@ int FactorSchurComplement(const Vec9& d11, const Vec9& d12, const Mat9& m21, con
   // factor S with row pivoting; like SUNLinSol_Dense, report the 1-based
   // column of the first zero pivot, here a column of the full matrix
   // (x2 = v part, 10..18), with the recoverable SUNLS_LUFACT_FAIL
-  FactorLu9(&c->schur_lu);
-  if (c->schur_lu.first_zero_pivot >= 0) {
-    c->last_flag = kBlock + c->schur_lu.first_zero_pivot + 1;
-    return SUNLS_LUFACT_FAIL;
+  c->schur_lu.compute(schur);
+  const auto pivots = c->schur_lu.matrixLU().diagonal();
+  for (int k = 0; k < kBlock; ++k) {
+    if (pivots(k) == 0.0) {
+      c->last_flag = kBlock + k + 1;
+      return SUNLS_LUFACT_FAIL;
+    }
   }
-  if (!c->schur_lu.lu.allFinite()) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_REC);
+  if (!c->schur_lu.matrixLU().allFinite()) return static_cast<int>(c->last_flag = SUNLS_PACKAGE_FAIL_REC);
 
   c->factored = true;
   c->last_flag = SUNLS_SUCCESS;
@@ -173,9 +170,7 @@ int Solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vector b, sunrealtyp
 
   // w = D11^{-1} b1; second block row: S x2 = b2 - M21 w
   const Vec9 w = c->inverse_d11.cwiseProduct(b1);
-  Vec9 rhs = b2;
-  SubtractProduct(c->m21, w, &rhs);
-  const Vec9 x2 = SolveLu9(c->schur_lu, rhs);
+  const Vec9 x2 = c->schur_lu.solve(b2 - c->m21 * w);
 
   // back substitution into the first block row: x1 = D11^{-1} (b1 - D12 x2)
   // = w - (d12 / d11) x2, which is b1 + gamma*x2 for D11 = I, D12 = -gamma*I
