@@ -53,9 +53,9 @@ int RunEvolve(const EvolveOptions& opt) {
 void AddEvolveCommand(CLI::App& app, Command* selected) {
   auto opt = std::make_shared<EvolveOptions>();
   CLI::App* sub = app.add_subcommand("evolve", "Evolve walkers under a scaffold (paper Algorithm 1)");
-  sub->add_option("--case", opt->scaffold_case, "Scaffold: free, time (eq. 7) or performance (eq. 8)")
+  sub->add_option("--case", opt->scaffold_case, "Scaffold on the trunk's length (paper §2.5)")
       ->required()
-      ->check(CLI::IsMember({"free", "time", "performance"}));
+      ->check(CLI::IsMember(ScaffoldCaseNames()));
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations to run")
       ->check(IntegerRange(1, kMaxGenerations))

@@ -21,7 +21,6 @@ using nlohmann::json;
 constexpr double kPaperCase3OverCase1 = 0.83;
 constexpr double kPaperCase2OverCase1 = 0.66;
 constexpr double kPaperBipedOverTripod = 1.375;
-constexpr int kPaperTripodFinals[3] = {0, 2, 0};  // of three runs, by case
 
 json Optional(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 
@@ -109,8 +108,8 @@ std::vector<int> ReportedGenerations(int generations) {
 
 ReproductionSummary Summarize(const std::vector<RunData>& runs) {
   ReproductionSummary s;
-  const ScaffoldCase cases[3] = {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance};
-  for (ScaffoldCase c : cases) {
+  for (const ScaffoldSpec& scaffold : Scaffolds()) {
+    const ScaffoldCase c = scaffold.id;
     std::vector<const RunData*> of_case;
     for (const RunData& r : runs) {
       if (r.scaffold_case == c) of_case.push_back(&r);
@@ -123,7 +122,7 @@ ReproductionSummary Summarize(const std::vector<RunData>& runs) {
     std::size_t generations = SIZE_MAX;
     for (const RunData* r : of_case) generations = std::min(generations, r->best_fitness.size());
     if (generations == 0 || generations == SIZE_MAX) {
-      throw std::runtime_error("case " + std::string(ScaffoldCaseName(c)) + " has a run with no generation");
+      throw std::runtime_error("case " + std::string(scaffold.name) + " has a run with no generation");
     }
     for (std::size_t g = 0; g < generations; ++g) {
       std::vector<double> values;
@@ -178,12 +177,11 @@ json SummaryToJson(const ReproductionSummary& s) {
     for (const auto& [g, m] : c.best_after) {
       best.push_back({{"generations", g}, {"mean", m.mean}, {"sd", m.sd}, {"replicates", m.n}});
     }
-    const int index = static_cast<int>(c.scaffold_case);
-    cases[ScaffoldCaseName(c.scaffold_case)] = {
-        {"runs", c.runs},
-        {"best_fitness_after", best},
-        {"tripod_finals", c.tripod_finals},
-        {"paper_tripod_finals_of_3", kPaperTripodFinals[index]}};
+    const ScaffoldSpec& scaffold = ScaffoldSpecOf(c.scaffold_case);
+    cases[scaffold.name] = {{"runs", c.runs},
+                            {"best_fitness_after", best},
+                            {"tripod_finals", c.tripod_finals},
+                            {"paper_tripod_finals_of_3", scaffold.paper_tripod_finals}};
   }
   return {{"cases", cases},
           {"case3_over_case1_share", {{"value", Optional(s.case3_over_case1)}, {"paper", kPaperCase3OverCase1}}},
@@ -222,10 +220,9 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
   md << " final best is a tripod | paper |\n|---|---|";
   for (std::size_t i = 0; i < columns.size(); ++i) md << "---|";
   md << "---|---|\n";
-  const char* names[3] = {"1, free", "2, time-constrained", "3, performance-based"};
   for (const CaseSummary& c : s.cases) {
-    const int index = static_cast<int>(c.scaffold_case);
-    md << "| " << names[index] << " | " << c.runs << " |";
+    const ScaffoldSpec& scaffold = ScaffoldSpecOf(c.scaffold_case);
+    md << "| " << scaffold.number() << ", " << scaffold.label << " | " << c.runs << " |";
     for (int g : columns) {
       const auto it = std::find_if(c.best_after.begin(), c.best_after.end(), [&](const auto& p) { return p.first == g; });
       if (it == c.best_after.end()) {
@@ -239,7 +236,7 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
         md << buf;
       }
     }
-    md << ' ' << c.tripod_finals << " of " << c.runs << " | " << kPaperTripodFinals[index] << " of 3 |\n";
+    md << ' ' << c.tripod_finals << " of " << c.runs << " | " << scaffold.paper_tripod_finals << " of 3 |\n";
   }
   md << "\n## Findings beside the paper's\n\n| finding | ours | paper |\n|---|---|---|\n";
   md << "| generations in which case 3's mean best fitness exceeds case 1's | " << pct(s.case3_over_case1)

@@ -42,8 +42,8 @@ namespace {
 
 // "<case>-<replicate>"
 bool IsRunName(const std::string& name) {
-  for (ScaffoldCase c : {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance}) {
-    const std::string prefix = std::string(ScaffoldCaseName(c)) + "-";
+  for (const ScaffoldSpec& scaffold : Scaffolds()) {
+    const std::string prefix = std::string(scaffold.name) + "-";
     if (name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
         name.find_first_not_of("0123456789", prefix.size()) == std::string::npos) {
       return true;
@@ -64,12 +64,18 @@ std::vector<std::string> ReproductionNames(const std::string& dir) {
 
 }  // namespace
 
+json ScaffoldsJson() {
+  json out = json::array();
+  for (const ScaffoldSpec& s : Scaffolds()) out.push_back({{"name", s.name}, {"label", s.label}, {"colour", s.colour}});
+  return out;
+}
+
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config) {
   std::vector<PlannedRun> runs;
-  for (ScaffoldCase c : {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance}) {
+  for (const ScaffoldSpec& scaffold : Scaffolds()) {
     for (int r = 1; r <= config.replicates; ++r) {
-      PlannedRun run{c, r, std::string(ScaffoldCaseName(c)) + "-" + std::to_string(r), RunConfig{}};
-      run.config.scaffold_case = c;
+      PlannedRun run{scaffold.id, r, std::string(scaffold.name) + "-" + std::to_string(r), RunConfig{}};
+      run.config.scaffold_case = scaffold.id;
       run.config.preset = config.preset;
       run.config.generations = config.generations;
       run.config.seed = config.seed + static_cast<std::uint64_t>(r - 1);
@@ -191,6 +197,7 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
   out["generations"] = config.generations;
   out["replicates"] = config.replicates;
   out["seed"] = config.seed;
+  out["scaffolds"] = ScaffoldsJson();  // the figures' list of cases
   out["runs"] = runs;
   const ReproductionFiles files(dir);
   WriteFileAtomically(files.summary_json, out.dump(2) + "\n");

@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "control/evaluation.h"
 #include "control/preset.h"
 #include "evolve/analysis.h"
@@ -60,6 +62,10 @@ struct PlannedRun {
 };
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config);
+
+// The scaffolds as summary.json lists them for the figure script: name, label
+// and colour of each, in the paper's order.
+nlohmann::json ScaffoldsJson();
 
 // Called before each run starts (with how many generations it has done) and
 // after each of its generations.

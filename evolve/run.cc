@@ -473,7 +473,7 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
   MutationRules rules;
   rules.probability = config_.ga.mutation_probability;
   rules.body_gene = config_.preset.body_gene_mutation;
-  rules.scaffold_case = config_.scaffold_case;
+  rules.body_redraw = ScaffoldSpecOf(config_.scaffold_case).authors_body_redraw;
 
   for (int g = completed_; g < config_.generations; ++g) {
     // the scaffold sets this generation's ceiling from what the archive

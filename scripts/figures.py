@@ -15,7 +15,8 @@ numpy and matplotlib.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.sv
   fig9   mean +- standard deviation of best fitness per case
 
 Inputs (formats as written by the `walkers` program):
-  RUN_DIR/summary.json              required
+  RUN_DIR/summary.json              required; its "scaffolds" list names the cases
+                                    (name, label, colour), in the paper's order
   RUN_DIR/<run dir>/generations.csv required for every run listed in summary.json
   RUN_DIR/walks.json                optional (fig4a, fig4b, fig6; picks fig7's run)
   RUN_DIR/gallery.json              optional (fig5)
@@ -62,12 +63,8 @@ from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
 
-CASES = ("free", "time", "performance")
-CASE_LABELS = {"free": "Case 1 free", "time": "Case 2 time-constrained",
-               "performance": "Case 3 performance-based"}
-CASE_COLOURS = {"free": "tab:green", "time": "tab:orange", "performance": "tab:purple"}
-# fig9's bands, told apart where they overlap
-CASE_HATCHES = {"free": "////", "time": "\\\\\\\\", "performance": "...."}
+# fig9's bands, told apart where they overlap (by the case's place in the list)
+HATCHES = ("////", "\\\\\\\\", "....", "xxxx", "++++", "oooo")
 GAIT_COLOURS = {"biped": "tab:blue", "tripod": "tab:red"}
 # a generation whose best fell has no gait class (every child fell)
 BEST_GAIT_COLOURS = {**GAIT_COLOURS, "none": "tab:gray"}
@@ -130,17 +127,38 @@ def field(obj, key, path, where, kind=None):
     return value
 
 
+def load_named_list(summary, key, path):
+    """summary[key]: a non-empty list of {name, label, colour} with distinct names (the
+    program's one list of scaffolds or learners), each given its place ("number", 1..)."""
+    items = field(summary, key, path, "", list)
+    if not items:
+        raise InputError(f"{path}: field '{key}' is empty")
+    out = []
+    for i, item in enumerate(items):
+        where = f"{key}[{i}]."
+        entry = {k: field(item, k, path, where, str) for k in ("name", "label", "colour")}
+        if not matplotlib.colors.is_color_like(entry["colour"]):
+            raise InputError(f"{path}: field '{where}colour' is '{entry['colour']}', not a colour")
+        if entry["name"] in [e["name"] for e in out]:
+            raise InputError(f"{path}: field '{where}name' repeats '{entry['name']}'")
+        out.append({**entry, "number": i + 1})
+    return out
+
+
 def load_summary(run_dir):
-    """summary.json -> list of runs {case, replicate, dir} and the replicate count."""
+    """summary.json -> its scaffolds, its runs {case, replicate, dir}, the replicate count
+    and the generations."""
     path = os.path.join(run_dir, "summary.json")
     summary = read_json(path, required=True)
+    scaffolds = load_named_list(summary, "scaffolds", path)
+    names = [s["name"] for s in scaffolds]
     runs = []
     for i, run in enumerate(field(summary, "runs", path, "", list)):
         where = f"runs[{i}]."
         case = field(run, "case", path, where, str)
-        if case not in CASES:
+        if case not in names:
             raise InputError(f"{path}: field '{where}case' is '{case}', "
-                             f"expected one of {', '.join(CASES)}")
+                             f"expected one of {', '.join(names)}")
         runs.append({"case": case, "replicate": field(run, "replicate", path, where, int),
                      "dir": field(run, "dir", path, where, str)})
     counts = {}
@@ -148,7 +166,8 @@ def load_summary(run_dir):
         counts[key] = summary.get(key, 0)
         if not isinstance(counts[key], int) or isinstance(counts[key], bool):
             raise InputError(f"{path}: field '{key}' has the wrong type")
-    return runs, max([counts["replicates"]] + [r["replicate"] for r in runs]), counts["generations"]
+    replicates = max([counts["replicates"]] + [r["replicate"] for r in runs])
+    return scaffolds, runs, replicates, counts["generations"]
 
 
 def load_generations(path):
@@ -270,13 +289,14 @@ def load_run_dir(run_dir):
     """Read and validate every input; raises InputError naming the bad file."""
     if not os.path.isdir(run_dir):
         raise InputError(f"{run_dir}: not a directory")
-    runs, replicates, generations = load_summary(run_dir)
+    scaffolds, runs, replicates, generations = load_summary(run_dir)
     for run in runs:
         run["data"] = load_generations(os.path.join(run_dir, run["dir"],
                                                     "generations.csv"))
     # the generation axes end where the summary's last "after N" column does
     longest = max([int(r["data"]["generation"][-1]) + 1 for r in runs] + [1])
-    return {"runs": runs, "replicates": replicates, "walks": load_walks(run_dir),
+    return {"scaffolds": scaffolds, "runs": runs, "replicates": replicates,
+            "walks": load_walks(run_dir),
             "gallery": load_gallery(run_dir), "generations": generations or longest}
 
 
@@ -573,24 +593,25 @@ def fig7(runs, walks, out_dir):
     save(fig, out_dir, "fig7")
 
 
-def runs_by_case(runs):
-    """{case: [runs sorted by replicate]} for every case, possibly empty."""
-    return {c: sorted((r for r in runs if r["case"] == c), key=lambda r: r["replicate"])
-            for c in CASES}
+def runs_by_case(runs, scaffolds):
+    """[(scaffold, [its runs sorted by replicate])] for every case, possibly empty."""
+    return [(s, sorted((r for r in runs if r["case"] == s["name"]),
+                       key=lambda r: r["replicate"])) for s in scaffolds]
 
 
-def fig8(runs, replicates, generations, out_dir):
+def fig8(runs, scaffolds, replicates, generations, out_dir):
     """Grid (rows = cases, columns = replicates) of best fitness coloured by gait."""
-    grouped = runs_by_case(runs)
+    grouped = runs_by_case(runs, scaffolds)
     ncols = max(1, replicates)
-    fig, axes = plt.subplots(len(CASES), ncols, sharex=True, sharey=True, squeeze=False,
-                             figsize=(DOUBLE, 1.15 + 1.45 * len(CASES)),
+    fig, axes = plt.subplots(len(grouped), ncols, sharex=True, sharey=True, squeeze=False,
+                             figsize=(DOUBLE, 1.15 + 1.45 * len(grouped)),
                              layout="constrained")
-    for row, case in enumerate(CASES):
-        by_rep = {r["replicate"]: r for r in grouped[case]}
+    for row, (scaffold, group) in enumerate(grouped):
+        by_rep = {r["replicate"]: r for r in group}
         for col in range(ncols):
             ax = axes[row, col]
-            ax.set_title(f"Case {row + 1} ({case}), replicate {col + 1}")
+            ax.set_title(f"Case {scaffold['number']} ({scaffold['name']}), "
+                         f"replicate {col + 1}")
             run = by_rep.get(col + 1)
             if run is None:
                 ax.text(0.5, 0.5, "no data", ha="center", va="center",
@@ -630,22 +651,27 @@ def case_stats(case, runs):
     return runs[0]["data"]["generation"][:n], y.mean(axis=0), std
 
 
-def fig9(runs, generations, out_dir):
+def case_label(scaffold):
+    """'Case 2 time-constrained'"""
+    return f"Case {scaffold['number']} {scaffold['label']}"
+
+
+def fig9(runs, scaffolds, generations, out_dir):
     """Mean +- sample standard deviation of best fitness per generation, per case."""
     fig, ax = plt.subplots(figsize=(SINGLE, 3.1), layout="constrained")
-    for case, group in runs_by_case(runs).items():
-        colour = CASE_COLOURS[case]
+    for index, (scaffold, group) in enumerate(runs_by_case(runs, scaffolds)):
+        colour = scaffold["colour"]
         if not group:
-            ax.plot([], [], color=colour, label=f"{CASE_LABELS[case]} (no data)")
+            ax.plot([], [], color=colour, label=f"{case_label(scaffold)} (no data)")
             continue
-        g, mean, std = case_stats(case, group)
-        ax.plot(g, mean, color=colour, label=f"{CASE_LABELS[case]} (n = {len(group)})")
+        g, mean, std = case_stats(scaffold["name"], group)
+        ax.plot(g, mean, color=colour, label=f"{case_label(scaffold)} (n = {len(group)})")
         if len(group) > 1:
             # outlined and hatched, so that overlapping bands stay apart
             ax.fill_between(g, mean - std, mean + std, lw=0.6, ls="--",
                             facecolor=matplotlib.colors.to_rgba(colour, 0.15),
                             edgecolor=matplotlib.colors.to_rgba(colour, 0.8),
-                            hatch=CASE_HATCHES[case])
+                            hatch=HATCHES[index % len(HATCHES)])
     ax.set_xlabel("generation")
     ax.set_ylabel("best fitness (leg lengths)")
     ax.set_xlim(0, generations)
@@ -699,12 +725,14 @@ def draw_all(inputs, out_dir):
     if not runs:
         warn("summary.json lists no runs: skipping fig7, fig8, fig9")
         return
-    for case, group in runs_by_case(runs).items():
+    scaffolds = inputs["scaffolds"]
+    for scaffold, group in runs_by_case(runs, scaffolds):
         if not group:
-            warn(f"summary.json: no runs for case '{case}': fig8 and fig9 say 'no data'")
+            warn(f"summary.json: no runs for case '{scaffold['name']}': fig8 and fig9 say "
+                 "'no data'")
     drawn("fig7", fig7, runs, walks, out_dir)
-    drawn("fig8", fig8, runs, inputs["replicates"], inputs["generations"], out_dir)
-    drawn("fig9", fig9, runs, inputs["generations"], out_dir)
+    drawn("fig8", fig8, runs, scaffolds, inputs["replicates"], inputs["generations"], out_dir)
+    drawn("fig9", fig9, runs, scaffolds, inputs["generations"], out_dir)
 
 
 def main(argv=None):

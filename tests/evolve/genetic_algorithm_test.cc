@@ -47,7 +47,7 @@ TEST(ArchiveTest, EqualFitnessKeepsTheOlderIndividual) {
 class BreedTest : public ::testing::Test {
  protected:
   GeneticAlgorithmConfig config_;
-  MutationRules rules_{0.9, BodyGeneMutation::kLikeEveryGene, ScaffoldCase::kFree};
+  MutationRules rules_{0.9, BodyGeneMutation::kLikeEveryGene, AuthorsBodyRedraw::kAfterEveryMutatedGene};
 
   Archive FullArchive() {
     Archive archive(16);
