@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
+#include "evolve/learner.h"
 #include "evolve/run.h"
 
 namespace walkers {
@@ -260,6 +261,62 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
   std::snprintf(buf, sizeof(buf), "\n%ld evaluations in %.0f s of evaluation time (%.1f per second).\n", s.evaluations,
                 s.evaluation_seconds, s.evaluation_seconds > 0 ? s.evaluations / s.evaluation_seconds : 0.0);
   md << buf;
+  return md.str();
+}
+
+json LearnersToJson(const std::vector<LearnerSummary>& learners) {
+  json out = json::object();
+  for (const LearnerSummary& l : learners) {
+    json cases = json::object();
+    for (const CaseSummary& c : l.summary.cases) {
+      const MeanSd& final_best = c.best_after.back().second;
+      cases[ScaffoldSpecOf(c.scaffold_case).name] = {{"runs", c.runs},
+                                                      {"generations", c.best_after.back().first},
+                                                      {"final_best_mean", final_best.mean},
+                                                      {"final_best_sd", final_best.sd},
+                                                      {"tripod_finals", c.tripod_finals}};
+    }
+    out[l.learner] = {{"cases", cases},
+                      {"case3_over_case1_share", Optional(l.summary.case3_over_case1)},
+                      {"case2_over_case1_final", Optional(l.summary.case2_over_case1)}};
+  }
+  return out;
+}
+
+std::string LearnersToMarkdown(const std::vector<LearnerSummary>& learners) {
+  std::ostringstream md;
+  char buf[256];
+  auto pct = [&](const std::optional<double>& x) {
+    if (!x) return std::string("—");
+    std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *x);
+    return std::string(buf);
+  };
+  md << "## Learners under the scaffolds\n\n"
+     << "Final best fitness (mean ± sd over replicates; one replicate: its value) and the runs whose final best is a "
+        "tripod.\n\n| learner |";
+  for (const ScaffoldSpec& scaffold : Scaffolds()) md << " case " << scaffold.number() << ", " << scaffold.label << " |";
+  md << " generations in which case 3's mean best exceeds case 1's | case 2's final mean best over case 1's |\n|---|";
+  for (std::size_t i = 0; i < Scaffolds().size(); ++i) md << "---|";
+  md << "---|---|\n";
+  for (const LearnerSummary& l : learners) {
+    md << "| " << LearnerByName(l.learner).label << " (" << l.learner << ") |";
+    for (const ScaffoldSpec& scaffold : Scaffolds()) {
+      const auto it = std::find_if(l.summary.cases.begin(), l.summary.cases.end(),
+                                   [&](const CaseSummary& c) { return c.scaffold_case == scaffold.id; });
+      if (it == l.summary.cases.end()) {
+        md << " — |";
+        continue;
+      }
+      const MeanSd& m = it->best_after.back().second;
+      if (m.n > 1) {
+        std::snprintf(buf, sizeof(buf), " %.2f ± %.2f, %d of %d tripods |", m.mean, m.sd, it->tripod_finals, it->runs);
+      } else {
+        std::snprintf(buf, sizeof(buf), " %.2f, %d of %d tripods |", m.mean, it->tripod_finals, it->runs);
+      }
+      md << buf;
+    }
+    md << ' ' << pct(l.summary.case3_over_case1) << " | " << pct(l.summary.case2_over_case1) << " |\n";
+  }
   return md.str();
 }
 

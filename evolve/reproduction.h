@@ -1,7 +1,9 @@
 // A reproduction of the paper's results: the three scaffolds, each with
-// several replicate runs, then their statistics and the data of the figures.
+// several replicate runs of each learner, then their statistics and the data
+// of the figures.
 //
-// DIR/<case>-<replicate>/   one evolution run each (evolve/run.h)
+// DIR/<case>-<replicate>/   one evolution run each (evolve/run.h) of the GA;
+// DIR/<learner>-<case>-<replicate>/  of another learner (evolve/learner.h)
 // DIR/summary.json          statistics beside the paper's values (evolve/analysis.h)
 // DIR/summary.md            the same as tables a person reads
 // DIR/walks.json            the best biped's and best tripod's walks (control/walk_record.h)
@@ -33,6 +35,9 @@ namespace walkers {
 constexpr int kMaxReplicates = 1000;
 
 struct ReproductionConfig {
+  // the learners compared, each under every scaffold; the first is the one
+  // the paper's statistics and figures 4-9 show
+  std::vector<std::string> learners = {DefaultLearner().name};
   Preset preset = OriginalPreset();
   int generations = 4000;
   int replicates = 3;
@@ -40,8 +45,9 @@ struct ReproductionConfig {
   GeneticAlgorithmConfig ga;
   EvaluationSettings evaluation;
 
-  // Every run's configuration (RunConfig::Validate), and seed + replicates - 1
-  // within the seeds' range. Throws std::invalid_argument naming the field.
+  // Every run's configuration (RunConfig::Validate), seed + replicates - 1
+  // within the seeds' range, and at least one learner, none twice. Throws
+  // std::invalid_argument naming the field.
   void Validate() const;
 };
 
@@ -57,8 +63,8 @@ struct ReproductionFiles {
 struct PlannedRun {
   ScaffoldCase scaffold_case;
   int replicate;
-  std::string name;  // "<case>-<replicate>"
-  RunConfig config;
+  std::string name;  // "<case>-<replicate>" for the GA, "<learner>-<case>-<replicate>" for another
+  RunConfig config;  // its learner too
 };
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config);
@@ -66,6 +72,8 @@ std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config);
 // The scaffolds as summary.json lists them for the figure script: name, label
 // and colour of each, in the paper's order.
 nlohmann::json ScaffoldsJson();
+// The reproduction's learners, likewise, in the order given.
+nlohmann::json LearnersJson(const std::vector<std::string>& learners);
 
 // Called before each run starts (with how many generations it has done) and
 // after each of its generations.

@@ -13,6 +13,9 @@ numpy and matplotlib.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.sv
   fig7   body, femur and tibia length per generation of the best biped's run
   fig8   best fitness per generation of every run, coloured by gait class
   fig9   mean +- standard deviation of best fitness per case
+  learners  (a reproduction of two learners or more) final best fitness per learner
+         and case with the runs ending as tripods, and each learner's mean best
+         fitness per generation and case
 
 Inputs (formats as written by the `walkers` program):
   RUN_DIR/summary.json              required; its "scaffolds" list names the cases
@@ -20,6 +23,10 @@ Inputs (formats as written by the `walkers` program):
   RUN_DIR/<run dir>/generations.csv required for every run listed in summary.json
   RUN_DIR/walks.json                optional (fig4a, fig4b, fig6; picks fig7's run)
   RUN_DIR/gallery.json              optional (fig5)
+  summary.json's "learners" (name, label, colour, as "scaffolds") and "learner_runs"
+  ({learner, case, replicate, dir}; their generations.csv required): optional; with
+  two learners or more they give the learners figure. Figures 4-9 show "runs", the
+  first learner's.
 
 Absent data (documented choice):
   * A required file that is missing, or ANY input file that is present but malformed,
@@ -170,6 +177,27 @@ def load_summary(run_dir):
     return scaffolds, runs, replicates, counts["generations"]
 
 
+def load_learners(summary_path, summary, scaffolds):
+    """summary.json's learners and every learner's runs {learner, case, replicate, dir};
+    ([], []) when it names no learners."""
+    if "learners" not in summary:
+        return [], []
+    learners = load_named_list(summary, "learners", summary_path)
+    names = [l["name"] for l in learners]
+    cases = [s["name"] for s in scaffolds]
+    runs = []
+    for i, run in enumerate(field(summary, "learner_runs", summary_path, "", list)):
+        where = f"learner_runs[{i}]."
+        entry = {k: field(run, k, summary_path, where, str) for k in ("learner", "case", "dir")}
+        for key, allowed in (("learner", names), ("case", cases)):
+            if entry[key] not in allowed:
+                raise InputError(f"{summary_path}: field '{where}{key}' is '{entry[key]}', "
+                                 f"expected one of {', '.join(allowed)}")
+        entry["replicate"] = field(run, "replicate", summary_path, where, int)
+        runs.append(entry)
+    return learners, runs
+
+
 def load_generations(path):
     """generations.csv -> dict of numpy arrays (numbers) and a list 'best_gait'."""
     if not os.path.isfile(path):
@@ -293,9 +321,15 @@ def load_run_dir(run_dir):
     for run in runs:
         run["data"] = load_generations(os.path.join(run_dir, run["dir"],
                                                     "generations.csv"))
+    summary_path = os.path.join(run_dir, "summary.json")
+    learners, learner_runs = load_learners(summary_path, read_json(summary_path, True), scaffolds)
+    if len(learners) > 1:
+        for run in learner_runs:
+            run["data"] = load_generations(os.path.join(run_dir, run["dir"], "generations.csv"))
     # the generation axes end where the summary's last "after N" column does
     longest = max([int(r["data"]["generation"][-1]) + 1 for r in runs] + [1])
     return {"scaffolds": scaffolds, "runs": runs, "replicates": replicates,
+            "learners": learners, "learner_runs": learner_runs,
             "walks": load_walks(run_dir),
             "gallery": load_gallery(run_dir), "generations": generations or longest}
 
@@ -681,6 +715,60 @@ def fig9(runs, scaffolds, generations, out_dir):
     save(fig, out_dir, "fig9")
 
 
+def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
+    """Final best fitness per learner and case (bars: mean over replicates; dots: each
+    replicate; above each bar its runs ending as tripods), and below, one panel per
+    learner, the mean best fitness per generation of each case."""
+    n = len(learners)
+    fig = plt.figure(figsize=(DOUBLE, 5.2), layout="constrained")
+    grid = fig.add_gridspec(2, n, height_ratios=(1.2, 1.0))
+    bars = fig.add_subplot(grid[0, :])
+    width = 0.8 / max(1, len(scaffolds))
+    top = 1.0
+    for i, learner in enumerate(learners):
+        for j, scaffold in enumerate(scaffolds):
+            group = [r for r in learner_runs
+                     if r["learner"] == learner["name"] and r["case"] == scaffold["name"]]
+            x = i - 0.4 + width * (j + 0.5)
+            if not group:
+                bars.text(x, 0.2, "no data", rotation=90, ha="center", va="bottom",
+                          fontsize=6, color="0.4")
+                continue
+            finals = np.array([float(r["data"]["best_fitness"][-1]) for r in group])
+            tripods = sum(r["data"]["best_gait"][-1] == "tripod" for r in group)
+            bars.bar(x, finals.mean(), width * 0.9, color=scaffold["colour"], alpha=0.75,
+                     label=case_label(scaffold) if i == 0 else None)
+            bars.scatter(np.full(len(finals), x), finals, s=6, color="black", zorder=3)
+            bars.text(x, max(finals.max(), finals.mean()) + 0.3, f"{tripods}/{len(group)}",
+                      ha="center", va="bottom", fontsize=6)
+            top = max(top, float(finals.max()))
+    bars.set_xticks(range(n), [f"{l['label']}\n({l['name']})" for l in learners])
+    bars.set_ylabel("final best fitness\n(leg lengths)")
+    bars.set_ylim(0, 1.2 * top)
+    bars.grid(axis="y", alpha=0.3, lw=0.5)
+    legend_above(bars, ncol=len(scaffolds),
+                 title="final best: bars the mean, dots the replicates, "
+                       "figures above: runs ending as tripods")
+    share = None
+    for i, learner in enumerate(learners):
+        ax = fig.add_subplot(grid[1, i], sharey=share)
+        share = share or ax
+        for scaffold in scaffolds:
+            group = [r for r in learner_runs
+                     if r["learner"] == learner["name"] and r["case"] == scaffold["name"]]
+            if group:
+                g, mean, _ = case_stats(f"{learner['name']} {scaffold['name']}", group)
+                ax.plot(g, mean, color=scaffold["colour"])
+        ax.set_title(learner["label"])
+        ax.set_xlim(0, generations)
+        ax.set_ylim(bottom=0)
+        ax.set_xlabel("generation")
+        ax.grid(alpha=0.3, lw=0.5)
+        if i == 0:
+            ax.set_ylabel("mean best fitness")
+    save(fig, out_dir, "learners")
+
+
 # ----------------------------------------------------------------------------- main
 
 def drawn(name, draw, *args):
@@ -733,6 +821,9 @@ def draw_all(inputs, out_dir):
     drawn("fig7", fig7, runs, walks, out_dir)
     drawn("fig8", fig8, runs, scaffolds, inputs["replicates"], inputs["generations"], out_dir)
     drawn("fig9", fig9, runs, scaffolds, inputs["generations"], out_dir)
+    if len(inputs["learners"]) > 1:
+        drawn("learners", learners_figure, inputs["learners"], inputs["learner_runs"],
+              scaffolds, inputs["generations"], out_dir)
 
 
 def main(argv=None):

@@ -316,6 +316,33 @@ class FiguresTest(unittest.TestCase):
             stderr = self.run_script(expect_rc=1)
             self.assertIn(message, stderr)
 
+    def add_learners(self, summary):
+        """A second learner beside the GA, whose runs reuse the GA's run folders."""
+        summary["learners"] = [{"name": "ga", "label": "genetic algorithm", "colour": "tab:blue"},
+                               {"name": "cmaes", "label": "CMA-ES", "colour": "tab:red"}]
+        summary["learner_runs"] = [dict(r, learner=name) for name in ("ga", "cmaes")
+                                   for r in summary["runs"]]
+
+    def test_two_learners_give_the_learners_figure(self):
+        self.assert_absent("learners")
+        self.run_script()
+        self.assert_absent("learners")          # one learner: nothing to compare
+        edit_json(os.path.join(self.run_dir, "summary.json"), self.add_learners)
+        stderr = self.run_script()
+        self.assertNotIn("warning", stderr)
+        self.assert_figure("learners")
+        self.assertIn("CMA-ES", self.svg_text("learners"))
+        for name in ALL:
+            self.assert_figure(name)
+
+    def test_a_learner_run_of_an_unknown_learner_is_an_error(self):
+        def change(summary):
+            self.add_learners(summary)
+            summary["learner_runs"][3]["learner"] = "nsga2"
+        edit_json(os.path.join(self.run_dir, "summary.json"), change)
+        stderr = self.run_script(expect_rc=1)
+        self.assertIn("'learner_runs[3].learner' is 'nsga2', expected one of ga, cmaes", stderr)
+
     def test_missing_summary_is_an_error(self):
         os.remove(os.path.join(self.run_dir, "summary.json"))
         stderr = self.run_script(expect_rc=1)
