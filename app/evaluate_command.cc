@@ -39,7 +39,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
     csv.emplace(opt.trajectory_path, true);
     const Model model = BuildModel(BodyOf(genome));
     observer = [&csv, model](double t, const State& state, const WalkingController& controller) {
-      csv->Write(t, state, Observe(model, state, controller.inputs().welds), WalkingStateName(controller.state()),
+      csv->Write(t, state, Observe(model, state), WalkingStateName(controller.state()),
                  controller.x_target());
     };
   }

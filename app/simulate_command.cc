@@ -12,7 +12,7 @@
 #include "app/validators.h"
 #include "control/genome.h"
 #include "control/start_pose.h"
-#include "dynamics/integrator.h"
+#include "integration/integrator.h"
 #include "dynamics/observation.h"
 
 namespace walkers::app {
@@ -49,7 +49,7 @@ int RunSimulate(const SimulateOptions& opt) {
 
   IntegrationStatus status;
   auto record = [&] {
-    if (csv) csv->Write(integrator.time(), integrator.state(), Observe(model, integrator.state(), inputs.welds));
+    if (csv) csv->Write(integrator.time(), integrator.state(), Observe(model, integrator.state()));
   };
   record();
   // one row per 1/30 s, and the final time

@@ -1,22 +1,30 @@
-// Accuracy of numerical settings: every genome of a set evaluated with the
-// given tolerances and with all of them 100x tighter. Prints per genome the
-// two fitnesses, gait classes, fall verdicts and times, then the median
-// relative fitness difference. Not a Google Benchmark: a measurement for
-// docs/performance.md.
+// The accuracy criterion of docs/performance.md ("Accuracy") for a set of
+// genomes: each is evaluated as an ensemble of N members (relative tolerance
+// perturbed as control/accuracy.h says) at the production settings and at
+// 100x tighter ones, and judged by JudgeAccuracy. Prints one line per genome
+// and the verdict; --json writes both ensembles of every genome, which
+// scripts/accuracy.py reads to add the two-sample Kolmogorov-Smirnov test
+// (SciPy) for the irregular genomes. Not a Google Benchmark: a measurement.
 //
-// With --ensemble N, each genome is evaluated N times at each of the two
-// settings, perturbed as control/accuracy.h says, and the medians are
-// compared (docs/performance.md, "Accuracy").
+//   accuracy [--ensemble N] [--threads T] [--json FILE] [--variant NAME | --tolerances R,Q,V] GENOME|DIR...
 //
-//   accuracy DIR [--ensemble N] [VARIANT | rtol atol_position atol_velocity]   (variants: bench/variants.h)
+// GENOME|DIR: genome files, or folders whose *.json are taken in name order.
+// The default ensemble is 25, the criterion's minimum. Exit status: 0 when
+// every genome passes by this program's test (medians, IQR, gait, fall), 1
+// when one does not, 2 on bad input.
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "bench/variants.h"
@@ -26,87 +34,33 @@ using namespace walkers;
 
 namespace {
 
+struct Options {
+  int ensemble = 25;
+  int threads = 1;
+  std::string json;
+  EvaluationSettings production;
+  std::string settings_name = "production";
+  std::vector<std::string> genomes;
+};
+
+nlohmann::json ToJson(const FitnessEnsemble& e) {
+  return {{"fitness", e.fitness},
+          {"bipeds", e.bipeds},
+          {"tripods", e.tripods},
+          {"falls", e.falls},
+          {"steps_median", Median(e.cvode_steps)},
+          {"wall_ms_median", Median(e.wall_ms)}};
+}
+
 int Usage(const char* program) {
-  std::fprintf(stderr, "usage: %s GENOME_DIR [--ensemble N] [VARIANT | rtol atol_position atol_velocity]\n",
+  std::fprintf(stderr,
+               "usage: %s [--ensemble N] [--threads T] [--json FILE] [--variant NAME | --tolerances R,Q,V] "
+               "GENOME|DIR...\n",
                program);
   return 2;
 }
 
-// the genomes (*.json) of a directory, sorted by name
-std::vector<std::string> GenomeFiles(const std::string& dir) {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-void CompareSingle(const std::vector<std::string>& files, const EvaluationSettings& production,
-                   const EvaluationSettings& tight) {
-  std::vector<double> differences, walls;
-  int gait_disagreements = 0, fall_disagreements = 0;
-  std::printf("%-28s %10s %10s %8s %7s %7s %9s %9s\n", "genome", "fitness", "tight", "rel.diff", "gait", "fell",
-              "ms", "tight ms");
-  for (const std::string& file : files) {
-    const Genome g = LoadGenome(file);
-    const EvaluationResult a = Evaluate(g, OriginalPreset(), production);
-    const EvaluationResult b = Evaluate(g, OriginalPreset(), tight);
-    differences.push_back(RelativeFitnessDifference(a.fitness, b.fitness));
-    walls.push_back(a.wall_ms);
-    gait_disagreements += a.gait != b.gait ? 1 : 0;
-    fall_disagreements += a.fell != b.fell ? 1 : 0;
-    std::printf("%-28s %10.4f %10.4f %7.2f%% %3s/%-3s %3d/%-3d %9.1f %9.1f\n",
-                std::filesystem::path(file).stem().string().c_str(), a.fitness, b.fitness,
-                100.0 * differences.back(), GaitName(a.gait), GaitName(b.gait), a.fell, b.fell, a.wall_ms,
-                b.wall_ms);
-  }
-  std::printf("median relative fitness difference %.2f%%; gait disagreements %d; fall disagreements %d; "
-              "median wall %.1f ms\n",
-              100.0 * Median(differences), gait_disagreements, fall_disagreements, Median(walls));
-}
-
-// Besides the criterion (the median over the set of the differences
-// of the medians), the genomes whose fitness the tight tolerances pin down
-// (every tight member within 1 % of their median): how far, at most, their
-// production medians and their production members are from the tight medians
-// (docs/performance.md, "Accuracy").
-void CompareEnsembles(const std::vector<std::string>& files, const EvaluationSettings& production,
-                      const EvaluationSettings& tight, int n) {
-  constexpr double kPinned = 0.01;
-  std::vector<double> differences;
-  int pinned = 0;
-  double worst_pinned_median = 0.0, worst_pinned_member = 0.0;
-  std::printf("%-28s %28s %28s %8s %9s %9s %s\n", "genome", "fitness: median [min, max]",
-              "tight: median [min, max]", "rel.diff", "bipeds", "falls", "pinned: worst member");
-  for (const std::string& file : files) {
-    const Genome g = LoadGenome(file);
-    const FitnessEnsemble a = EvaluateEnsemble(g, OriginalPreset(), production, n);
-    const FitnessEnsemble b = EvaluateEnsemble(g, OriginalPreset(), tight, n);
-    differences.push_back(RelativeFitnessDifference(a.Median(), b.Median()));
-    char pin[32] = "no";
-    if (b.Pinned(kPinned)) {
-      const double worst = a.WorstDifferenceFrom(b.Median());
-      ++pinned;
-      worst_pinned_median = std::max(worst_pinned_median, differences.back());
-      worst_pinned_member = std::max(worst_pinned_member, worst);
-      std::snprintf(pin, sizeof(pin), "%.2f%%", 100.0 * worst);
-    }
-    std::printf("%-28s %8.3f [%7.3f, %7.3f] %8.3f [%7.3f, %7.3f] %7.2f%% %4d/%-4d %4d/%-4d %s\n",
-                std::filesystem::path(file).stem().string().c_str(), a.Median(), a.Min(), a.Max(), b.Median(),
-                b.Min(), b.Max(),
-                100.0 * differences.back(), a.bipeds, b.bipeds, a.falls, b.falls, pin);
-  }
-  std::printf("%d evaluations per genome and setting; median relative difference of the medians %.2f%%\n", n,
-              100.0 * Median(differences));
-  std::printf("pinned down by the tight tolerances (every tight member within %.0f%% of their median): %d of %zu; "
-              "of those, production medians at most %.2f%% and production members at most %.2f%% from the tight "
-              "medians\n",
-              100.0 * kPinned, pinned, files.size(), 100.0 * worst_pinned_median, 100.0 * worst_pinned_member);
-}
-
-// A tolerance from the command line: a positive number, or an error naming it.
-double ParseTolerance(const std::string& name, const std::string& text) {
+double ParsePositive(const std::string& name, const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !(value > 0.0) || !std::isfinite(value)) {
@@ -115,56 +69,140 @@ double ParseTolerance(const std::string& name, const std::string& text) {
   return value;
 }
 
-// An ensemble size from the command line: a whole number in 1..1000 (the
-// range of `walkers evaluate --ensemble`), or an error naming it.
-int ParseEnsembleSize(const std::string& text) {
+int ParseCount(const std::string& name, const std::string& text, long max) {
   char* end = nullptr;
   errno = 0;
   const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || value < 1 || value > 1000) {
-    throw std::invalid_argument("--ensemble must be a whole number in 1..1000, got '" + text + "'");
+  if (text.empty() || *end != '\0' || errno == ERANGE || value < 1 || value > max) {
+    throw std::invalid_argument(name + " must be a whole number in 1.." + std::to_string(max) + ", got '" + text +
+                                "'");
   }
   return static_cast<int>(value);
 }
 
-int Run(const char* program, std::vector<std::string> args) {
-  int ensemble = 0;
-  if (args.size() >= 3 && args[1] == "--ensemble") {
-    ensemble = ParseEnsembleSize(args[2]);
-    args.erase(args.begin() + 1, args.begin() + 3);
-  }
-  if (args.size() != 1 && args.size() != 2 && args.size() != 4) return Usage(program);
-  EvaluationSettings production;
-  if (args.size() == 2) {
-    bool found = false;
-    for (const bench::Variant& v : bench::Variants()) {
-      if (v.name == args[1]) {
-        production = v.settings;
-        found = true;
+Options Parse(const std::vector<std::string>& args) {
+  Options opt;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--ensemble") {
+      opt.ensemble = ParseCount(a, value(), 1000);
+    } else if (a == "--threads") {
+      opt.threads = ParseCount(a, value(), 256);
+    } else if (a == "--json") {
+      opt.json = value();
+    } else if (a == "--variant") {
+      const std::string name = value();
+      bool found = false;
+      for (const bench::Variant& v : bench::Variants()) {
+        if (v.name == name) opt.production = v.settings, found = true;
       }
+      if (!found) throw std::invalid_argument("unknown variant " + name + " (bench/variants.h)");
+      opt.settings_name = name;
+    } else if (a == "--tolerances") {
+      const std::string text = value();
+      std::stringstream in(text);
+      std::string r, q, v;
+      if (!std::getline(in, r, ',') || !std::getline(in, q, ',') || !std::getline(in, v)) {
+        throw std::invalid_argument("--tolerances takes rtol,atol_position,atol_velocity, got '" + text + "'");
+      }
+      opt.production.integrator.relative_tolerance = ParsePositive("rtol", r);
+      opt.production.integrator.absolute_tolerance_position = ParsePositive("atol_position", q);
+      opt.production.integrator.absolute_tolerance_velocity = ParsePositive("atol_velocity", v);
+      opt.settings_name = "tolerances " + text;
+    } else if (a.rfind("--", 0) == 0) {
+      throw std::invalid_argument("unknown option " + a);
+    } else if (std::filesystem::is_directory(a)) {
+      std::vector<std::string> files;
+      for (const auto& entry : std::filesystem::directory_iterator(a)) {
+        if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+      }
+      std::sort(files.begin(), files.end());
+      opt.genomes.insert(opt.genomes.end(), files.begin(), files.end());
+    } else {
+      opt.genomes.push_back(a);
     }
-    if (!found) throw std::invalid_argument("unknown variant " + args[1] + " (bench/variants.h)");
   }
-  if (args.size() == 4) {
-    production.integrator.relative_tolerance = ParseTolerance("rtol", args[1]);
-    production.integrator.absolute_tolerance_position = ParseTolerance("atol_position", args[2]);
-    production.integrator.absolute_tolerance_velocity = ParseTolerance("atol_velocity", args[3]);
+  if (opt.genomes.empty()) throw std::invalid_argument("no genome files given");
+  return opt;
+}
+
+int Run(const Options& opt) {
+  const EvaluationSettings tight = HundredTimesTighter(opt.production);
+  std::vector<Genome> genomes;
+  for (const std::string& file : opt.genomes) genomes.push_back(LoadGenome(file));
+
+  // genomes are shared out to the threads; each result has its slot, so the
+  // output does not depend on the number of threads
+  std::vector<FitnessEnsemble> production(genomes.size()), tighter(genomes.size());
+  std::atomic<size_t> next{0};
+  std::vector<std::thread> pool;
+  for (int t = 0; t < opt.threads; ++t) {
+    pool.emplace_back([&] {
+      for (size_t i; (i = next++) < genomes.size();) {
+        production[i] = EvaluateEnsemble(genomes[i], OriginalPreset(), opt.production, opt.ensemble);
+        tighter[i] = EvaluateEnsemble(genomes[i], OriginalPreset(), tight, opt.ensemble);
+      }
+    });
   }
-  const EvaluationSettings tight = HundredTimesTighter(production);
-  const std::vector<std::string> files = GenomeFiles(args[0]);
-  if (ensemble > 0) {
-    CompareEnsembles(files, production, tight, ensemble);
-  } else {
-    CompareSingle(files, production, tight);
+  for (std::thread& t : pool) t.join();
+
+  const auto& s = opt.production.integrator;
+  std::printf("settings: %s (rtol %g, atol_q %g, atol_v %g), tight: 100x; ensembles of %d\n",
+              opt.settings_name.c_str(), s.relative_tolerance, s.absolute_tolerance_position,
+              s.absolute_tolerance_velocity, opt.ensemble);
+  std::printf("%-32s %26s %26s %8s %8s %5s %5s %5s %9s %9s\n", "genome", "median [IQR]", "tight: median [IQR]",
+              "rel.diff", "regular", "gait", "fall", "pass", "steps", "ms");
+  nlohmann::json out = {{"settings", opt.settings_name},
+                        {"relative_tolerance", s.relative_tolerance},
+                        {"absolute_tolerance_position", s.absolute_tolerance_position},
+                        {"absolute_tolerance_velocity", s.absolute_tolerance_velocity},
+                        {"ensemble", opt.ensemble},
+                        {"genomes", nlohmann::json::array()}};
+  int failed = 0;
+  std::vector<double> steps, ms;
+  for (size_t i = 0; i < genomes.size(); ++i) {
+    const FitnessEnsemble& a = production[i];
+    const FitnessEnsemble& b = tighter[i];
+    const AccuracyVerdict v = JudgeAccuracy(a, b);
+    failed += v.passes() ? 0 : 1;
+    const std::string name = std::filesystem::path(opt.genomes[i]).stem().string();
+    steps.push_back(Median(production[i].cvode_steps));
+    ms.push_back(Median(production[i].wall_ms));
+    std::printf("%-32s %8.3f [%7.3f, %7.3f] %8.3f [%7.3f, %7.3f] %7.2f%% %8s %5s %5s %5s %9.0f %9.1f\n", name.c_str(),
+                a.Median(), a.LowerQuartile(), a.UpperQuartile(), b.Median(), b.LowerQuartile(), b.UpperQuartile(),
+                100.0 * v.median_difference, v.regular ? "yes" : "no", v.gait_agrees ? "yes" : "NO",
+                v.fall_agrees ? "yes" : "NO", v.passes() ? "yes" : "NO", steps.back(), ms.back());
+    out["genomes"].push_back({{"genome", name},
+                              {"file", opt.genomes[i]},
+                              {"production", ToJson(production[i])},
+                              {"tight", ToJson(tighter[i])},
+                              {"regular", v.regular},
+                              {"median_difference", v.median_difference},
+                              {"passes", v.passes()}});
   }
-  return 0;
+  std::printf("%zu genomes: %d fail (medians and IQR; scripts/accuracy.py adds the KS test); median over the set "
+              "%.0f steps, %.1f ms per evaluation\n",
+              genomes.size(), failed, Median(steps), Median(ms));
+  if (!opt.json.empty()) {
+    std::ofstream file(opt.json);
+    file << out.dump(1) << "\n";
+    if (!file) throw std::runtime_error("cannot write " + opt.json);
+  }
+  return failed == 0 ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
-    return Run(argv[0], std::vector<std::string>(argv + 1, argv + argc));
+    return Run(Parse(std::vector<std::string>(argv + 1, argv + argc)));
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "accuracy: %s\n", e.what());
+    return Usage(argv[0]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "accuracy: %s\n", e.what());
     return 2;

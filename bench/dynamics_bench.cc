@@ -10,12 +10,12 @@
 
 #include "control/genome.h"
 #include "control/start_pose.h"
-#include "dynamics/block_matrix18.h"
+#include "integration/block_matrix18.h"
 #include "dynamics/equations_of_motion.h"
-#include "dynamics/fixed_size_ops.h"
-#include "dynamics/integrator.h"
+#include "integration/fixed_size_ops.h"
+#include "integration/integrator.h"
 #include "dynamics/jacobian.h"
-#include "dynamics/schur_linear_solver.h"
+#include "integration/schur_linear_solver.h"
 #include "dynamics/observation.h"
 #include "dynamics/tree_ldlt9.h"
 

@@ -52,10 +52,7 @@ inline std::vector<Variant> Variants() {
     s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 1e-7;
   });
   add("friction_transition_0.01", [](EvaluationSettings* s) { s->contact.transition_velocity = 0.01; });
-  add("weld_stiffness_1e8", [](EvaluationSettings* s) {
-    s->weld.stiffness = 1e8;
-    s->weld.angular_stiffness = 1e7;
-  });
+  add("weld_stabilization_30", [](EvaluationSettings* s) { s->weld.stabilization = 30.0; });
   return v;
 }
 

@@ -80,6 +80,8 @@ FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, con
     ensemble.bipeds += r.gait == Gait::kBiped ? 1 : 0;
     ensemble.tripods += r.gait == Gait::kTripod ? 1 : 0;
     ensemble.falls += r.fell ? 1 : 0;
+    ensemble.cvode_steps.push_back(static_cast<double>(r.cvode_steps));
+    ensemble.wall_ms.push_back(r.wall_ms);
   }
   return ensemble;
 }

@@ -27,6 +27,7 @@ double Quantile(std::vector<double> values, double p);
 
 struct FitnessEnsemble {
   std::vector<double> fitness;  // one per member, in order of the perturbation
+  std::vector<double> cvode_steps, wall_ms;  // what each member cost, in the same order
   int bipeds = 0;
   int tripods = 0;
   int falls = 0;  // a fall has no gait class

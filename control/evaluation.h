@@ -9,7 +9,7 @@
 #include "control/genome.h"
 #include "control/preset.h"
 #include "control/walking_controller.h"
-#include "dynamics/integrator.h"
+#include "integration/integrator.h"
 
 namespace walkers {
 

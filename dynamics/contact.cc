@@ -53,12 +53,14 @@ bool PairEnabled(const ModelOptions& options, const ContactPairSpec& spec) {
   return options.contact && (options.self_contact || !spec.self_contact);
 }
 
-// every enabled pair's result at the state of kin
+// every enabled pair's result at the state of kin; with welds, not the pairs
+// they hold (HeldByWeld), which are then not computed at all
 template <typename Visit>
-void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit) {
+void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit, const Welds* welds = nullptr) {
   for (int pair = 0; pair < kNumContactPairs; ++pair) {
     const ContactPairSpec& spec = ContactPairs()[pair];
     if (!PairEnabled(model.options, spec)) continue;
+    if (welds && HeldByWeld(spec, *welds)) continue;
     visit(pair, spec,
           contact_laws::PairContact<double>(model, pair, MotionOf(kin, spec.a), MotionOf(kin, spec.b)));
   }
@@ -86,15 +88,15 @@ bool HeldByWeld(const ContactPairSpec& pair, const Welds& welds) {
 void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q) {
   // each body's wrench about its reference point, then J^T F + j^T torque
   std::array<Wrench<double>, kNumContactBodies> wrenches{};
-  ForEachPair(model, kin, [&](int, const ContactPairSpec& spec, const PairResult<double>& r) {
-    if (HeldByWeld(spec, welds)) return;
+  const auto add = [&](int, const ContactPairSpec& spec, const PairResult<double>& r) {
     Wrench<double>& a = wrenches[static_cast<int>(spec.a)];
     Wrench<double>& b = wrenches[static_cast<int>(spec.b)];
     a.force += r.on_a.force;
     a.torque += r.on_a.torque;
     b.force += r.on_b.force;
     b.torque += r.on_b.torque;
-  });
+  };
+  ForEachPair(model, kin, add, &welds);
   for (int i = 0; i < kNumContactBodies; ++i) {
     const ContactBodyKinematics k = KinematicsOf(kin, static_cast<ContactBody>(i));
     if (!k.point) continue;
@@ -125,19 +127,6 @@ bool TrunkSupported(const Model& model, const Kinematics& kin) {
   return supported;
 }
 
-void AddWeldForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q) {
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    if (!welds[leg].active) continue;
-    const LegKinematics& l = kin.legs[leg];
-    // spring-damper on the foot centre and on the foot angle
-    const Vec2 f = -model.weld.stiffness * (l.ankle.p - welds[leg].anchor) - model.weld_damping * l.ankle.v;
-    const double torque = -model.weld.angular_stiffness * (l.foot.angle - welds[leg].angle) -
-                          model.weld_angular_damping * l.foot.rate;
-    AddTransposeProduct(l.ankle, f, Q);
-    AddTransposeProduct(l.foot, torque, Q);
-  }
-}
-
 double JointStopTorque(const JointStop& stop, double angle, double rate) {
   // overrun x past the limit, pushing back with a Hunt–Crossley style damper
   if (angle > stop.limit) {
@@ -160,16 +149,9 @@ void AddJointStopTorques(const Model& model, const Vec9& q, const Vec9& v, Vec9*
   }
 }
 
-double ElasticEnergy(const Model& model, const Kinematics& kin, const Welds& welds) {
+double ElasticEnergy(const Model& model, const Kinematics& kin) {
   double e = 0.0;
   for (const ContactReport& r : ReportContacts(model, kin)) e += r.energy;
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    if (!welds[leg].active) continue;
-    const LegKinematics& l = kin.legs[leg];
-    e += 0.5 * model.weld.stiffness * (l.ankle.p - welds[leg].anchor).squaredNorm();
-    const double da = l.foot.angle - welds[leg].angle;
-    e += 0.5 * model.weld.angular_stiffness * da * da;
-  }
   if (model.options.joint_stops) {
     for (int leg = 0; leg < kNumLegs; ++leg) {
       const LegKinematics& l = kin.legs[leg];

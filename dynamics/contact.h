@@ -55,7 +55,7 @@ struct ContactPairSpec {
 };
 const std::array<ContactPairSpec, kNumContactPairs>& ContactPairs();
 
-// A foot held at a planting pose by the stiff weld.
+// A foot held at a planting pose by its weld (an exact constraint, ForwardDynamics).
 struct Weld {
   bool active = false;
   Vec2 anchor = Vec2::Zero();  // where the foot's centre is held [m]
@@ -86,15 +86,14 @@ void AddContactForces(const Model& model, const Kinematics& kin, const Welds& we
 // function of the squared slip speed: the friction force is -f_n g v_slip.
 double FrictionPerSlip(const FrictionLaw& law, double slip_squared);
 
-// Generalized forces of welds and joint stops, added to Q.
-void AddWeldForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q);
+// Generalized forces of the joint stops, added to Q.
 void AddJointStopTorques(const Model& model, const Vec9& q, const Vec9& v, Vec9* Q);
 
 // Torque of one joint stop at angle and rate.
 double JointStopTorque(const JointStop& stop, double angle, double rate);
 
-// Elastic energy stored in the contact springs, welds and joint stops [J].
-double ElasticEnergy(const Model& model, const Kinematics& kin, const Welds& welds);
+// Elastic energy stored in the contact springs and joint stops [J].
+double ElasticEnergy(const Model& model, const Kinematics& kin);
 
 // Deepest penetration of any surface into the ground [m] (0 when nothing touches).
 double MaxGroundPenetration(const Model& model, const Kinematics& kin);

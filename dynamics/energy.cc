@@ -40,8 +40,8 @@ CenterOfMass ComputeCenterOfMass(const Model& model, const Kinematics& kin) {
   return c;
 }
 
-double PotentialEnergy(const Model& model, const Kinematics& kin, const Welds& welds) {
-  return GravitationalEnergy(model, kin) + ElasticEnergy(model, kin, welds);
+double PotentialEnergy(const Model& model, const Kinematics& kin) {
+  return GravitationalEnergy(model, kin) + ElasticEnergy(model, kin);
 }
 
 }  // namespace walkers

@@ -15,10 +15,10 @@ double KineticEnergy(const Model& model, const Kinematics& kin);
 // Gravitational potential energy, zero at ground level [J].
 double GravitationalEnergy(const Model& model, const Kinematics& kin);
 
-// Potential energy: gravity plus the elastic energy of contact springs,
-// welds and joint stops [J]. With no torques, kinetic + potential can only
-// decrease: every other force element dissipates.
-double PotentialEnergy(const Model& model, const Kinematics& kin, const Welds& welds);
+// Potential energy: gravity plus the elastic energy of contact springs and
+// joint stops [J]. With no torques, kinetic + potential can only decrease:
+// every other force element dissipates, and the welds do no work.
+double PotentialEnergy(const Model& model, const Kinematics& kin);
 
 // Centre of mass and its velocity (every point mass of the tree).
 struct CenterOfMass {

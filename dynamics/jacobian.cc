@@ -53,11 +53,6 @@ void AddForceDerivatives(const PointKinematics& p, const Block& block, const Vec
   dG_dv->noalias() += J.transpose() * dF_dv;
 }
 
-// d(J v)/dq in the point's block
-Jac2x6 LocalVelocityJacobian(const PointKinematics& p, const Block& block) {
-  return block.Gather(PointVelocityJacobian(p));
-}
-
 // gravity and inertia of a point mass at fixed a: F = m (g - J a - a_bias)
 void AddPointMassDerivatives(double m, double gravity, const PointKinematics& p, const Vec9& a, Mat9* dR_dq,
                              Mat9* dR_dv) {
@@ -159,23 +154,55 @@ void AddContactDerivatives(const Model& model, const Kinematics& kin, const Weld
   }
 }
 
-void AddWeldDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, Mat9* dR_dq, Mat9* dR_dv) {
+// The welds' constraint forces G^T lambda at fixed lambda: the foot centre's
+// part turns with the links of the ankle point (the angle's row is constant).
+void AddWeldForceDerivatives(const Kinematics& kin, const Welds& welds, const WeldVector& lambda, Mat9* dR_dq) {
+  int row = 0;
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    if (!welds[leg].active) continue;
+    const PointKinematics& ankle = kin.legs[leg].ankle;
+    const Vec2 F = lambda.segment<2>(row);
+    for (int k = 0; k < ankle.num_links; ++k) {
+      const PointKinematics::Link& link = ankle.links[k];
+      dR_dq->noalias() += (-link.r.dot(F)) * link.body->j.transpose() * link.body->j;
+    }
+    row += 3;
+  }
+}
+
+// The derivatives of the weld constraints G q'' + G' q' + 2a G q' + a^2 e = 0
+// (ForwardDynamics) with respect to q and v at fixed q''.
+void WeldConstraintDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, const Vec9& a,
+                               WeldJacobian* C_q, WeldJacobian* C_v) {
+  int rows = 0;
+  for (const Weld& w : welds) rows += w.active ? 3 : 0;
+  C_q->setZero(rows, kNumCoords);
+  C_v->setZero(rows, kNumCoords);
+  const double s = model.weld.stabilization;
+  int row = 0;
   for (int leg = 0; leg < kNumLegs; ++leg) {
     if (!welds[leg].active) continue;
     const LegKinematics& l = kin.legs[leg];
-    const Block block(leg);
-    const Jac2x6 J = block.Gather(l.ankle.J);
-    const Vec2 F = -model.weld.stiffness * (l.ankle.p - welds[leg].anchor) - model.weld_damping * l.ankle.v;
-    const Jac2x6 dF_dq = -model.weld.stiffness * J - model.weld_damping * LocalVelocityJacobian(l.ankle, block);
-    const Jac2x6 dF_dv = -model.weld_damping * J;
-    Mat6 dG_dq = Mat6::Zero(), dG_dv = Mat6::Zero();
-    AddForceDerivatives(l.ankle, block, F, dF_dq, dF_dv, &dG_dq, &dG_dv);
-    // the torque on the foot angle: its row j is constant
-    const Row6 foot = block.Gather(l.foot.j);
-    dG_dq.noalias() -= model.weld.angular_stiffness * foot.transpose() * foot;
-    dG_dv.noalias() -= model.weld_angular_damping * foot.transpose() * foot;
-    block.ScatterAdd(dG_dq, dR_dq);
-    block.ScatterAdd(dG_dv, dR_dv);
+    // the foot centre: d(J a + a_bias)/dq = -sum (r_k (j_k a) + perp(r_k) w_k^2) j_k,
+    // d(a_bias)/dv = -sum 2 w_k r_k j_k, d(J v)/dq = PointVelocityJacobian
+    Jac2x9 d_acc_dq = Jac2x9::Zero(), d_bias_dv = Jac2x9::Zero();
+    for (int k = 0; k < l.ankle.num_links; ++k) {
+      const PointKinematics::Link& link = l.ankle.links[k];
+      const double w = link.body->rate;
+      d_acc_dq.noalias() -= (link.r * link.body->j.dot(a) + Perp(link.r) * (w * w)) * link.body->j;
+      d_bias_dv.noalias() -= (2.0 * w) * link.r * link.body->j;
+    }
+    C_q->middleRows<2>(row) = d_acc_dq + 2.0 * s * PointVelocityJacobian(l.ankle) + s * s * l.ankle.J;
+    C_v->middleRows<2>(row) = d_bias_dv + 2.0 * s * l.ankle.J;
+    // the foot angle: its row is constant
+    C_q->row(row + 2) = s * s * l.foot.j;
+    C_v->row(row + 2) = 2.0 * s * l.foot.j;
+    row += 3;
+  }
+  for (int i = 0; i < kNumCoords; ++i) {
+    if (!model.options.locked[i]) continue;
+    C_q->col(i).setZero();
+    C_v->col(i).setZero();
   }
 }
 
@@ -222,7 +249,7 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
   }
 
   AddContactDerivatives(model, kin, inputs.welds, &dR_dq, &dR_dv);
-  AddWeldDerivatives(model, kin, inputs.welds, &dR_dq, &dR_dv);
+  AddWeldForceDerivatives(kin, inputs.welds, ws->lambda, &dR_dq);
   if (model.options.joint_stops) {
     for (int leg = 0; leg < kNumLegs; ++leg) {
       for (int joint = 0; joint < kNumJoints; ++joint) {
@@ -245,6 +272,15 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
   *da_dv = dR_dv;
   ws->mass_ldlt.SolveInPlace(da_dq);
   ws->mass_ldlt.SolveInPlace(da_dv);
+
+  // the welds hold: M da = dR + G^T dlambda with G da = -C, so
+  // da = M^-1 dR - M^-1 G^T (G M^-1 G^T)^-1 (C + G M^-1 dR)
+  if (ws->G.rows() > 0) {
+    WeldJacobian C_q, C_v;
+    WeldConstraintDerivatives(model, kin, inputs.welds, a, &C_q, &C_v);
+    *da_dq -= ws->Minv_Gt * ws->weld_ldlt.Solve(WeldJacobian(C_q + ws->G * (*da_dq)));
+    *da_dv -= ws->Minv_Gt * ws->weld_ldlt.Solve(WeldJacobian(C_v + ws->G * (*da_dv)));
+  }
   return da_dq->allFinite() && da_dv->allFinite();
 }
 

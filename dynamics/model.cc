@@ -95,11 +95,6 @@ Model BuildModel(const BodyParameters& body, const ModelOptions& options,
   m.sites = BuildContactSites(Vec3(hx, hy, hz), Vec3(fx, fy, fz), contact.leg_z, contact.knee_radius,
                               contact.mesh_resolution);
 
-  // weld damping: the given damping ratio for the foot (with its ankle mass)
-  // alone on the weld's springs, so the weld's own mode dies out in a few ms
-  m.weld_damping = 2.0 * weld.damping_ratio * std::sqrt(weld.stiffness * m.ankle_mass);
-  m.weld_angular_damping =
-      2.0 * weld.damping_ratio * std::sqrt(weld.angular_stiffness * (m.foot_inertia + m.tibia_inertia));
   return m;
 }
 

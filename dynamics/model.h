@@ -83,14 +83,15 @@ struct ContactLaws {
   HertzLaw knee_ground;
 };
 
-// The stiff spring-damper that holds a planted foot (MODEL.md §3).
+// The weld that holds a planted foot (MODEL.md §3): an exact constraint on
+// the foot's centre and angle, as the authors' Simbody weld.
 struct WeldParameters {
-  double stiffness = 1.0e9;          // [N/m] on the foot centre, x and y
-  double angular_stiffness = 1.0e8;  // [N m/rad] on the foot angle
-  double damping_ratio = 1.0;        // [-] of the foot alone on these springs
   // the authors' weld holds the foot point (0, -halfFootY + depth) at ground
   // level: a planted foot sits this deep, its contact springs preloaded
-  double depth = 0.002;              // [m]
+  double depth = 0.002;  // [m]
+  // Baumgarte's stabilisation: the constraint's error e obeys
+  // e'' + 2 a e' + a^2 e = 0, so integration drift decays in ~1/a
+  double stabilization = 100.0;  // [1/s] a
 };
 
 // Hunt–Crossley style joint limit: tau = -k x (1 + d x') past +-limit.
@@ -137,9 +138,6 @@ struct Model {
   ContactLaws laws;
   ContactSites sites;
 
-  // weld damping, derived from the foot's mass and inertia
-  double weld_damping = 0;          // [N s/m]
-  double weld_angular_damping = 0;  // [N m s/rad]
 
   double leg_length() const { return body.femur_length + body.tibia_length; }
 };

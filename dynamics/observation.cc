@@ -5,12 +5,12 @@
 
 namespace walkers {
 
-Observation Observe(const Model& model, const State& state, const Welds& welds) {
+Observation Observe(const Model& model, const State& state) {
   Kinematics kin;
   ComputeKinematics(model, state.q, state.v, &kin);
   Observation o;
   o.kinetic = KineticEnergy(model, kin);
-  o.potential = PotentialEnergy(model, kin, welds);
+  o.potential = PotentialEnergy(model, kin);
   o.trunk_contact = TrunkSupported(model, kin);
   o.max_penetration = MaxGroundPenetration(model, kin);
   return o;

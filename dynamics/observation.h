@@ -14,7 +14,7 @@ struct Observation {
   double max_penetration = 0;  // [m] deepest contact point
 };
 
-Observation Observe(const Model& model, const State& state, const Welds& welds);
+Observation Observe(const Model& model, const State& state);
 
 // A weld that plants a leg's foot where it is: centre at (x, half_foot_y), flat.
 Weld PlantFoot(const Model& model, const State& state, int leg);

@@ -158,8 +158,7 @@ const EvaluationField kEvaluationFields[] = {
     {"friction_transition_velocity", {0, 1e3, true},
      [](EvaluationSettings* e) { return &e->contact.transition_velocity; }},
     {"weld_depth", {0, 0.1}, [](EvaluationSettings* e) { return &e->weld.depth; }},
-    {"weld_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->weld.stiffness; }},
-    {"weld_angular_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->weld.angular_stiffness; }},
+    {"weld_stabilization", {0, 1e6, true}, [](EvaluationSettings* e) { return &e->weld.stabilization; }},
 };
 constexpr int kMaxBdfOrder = 5;  // CVODE's BDF, the method of every run
 // InitF of the performance scaffold: positive (kAuthorsInitialFitness)

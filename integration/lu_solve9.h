@@ -17,7 +17,7 @@
 // - the triangular solver works in panels of EIGEN_TUNE_TRIANGULAR_PANEL_WIDTH
 //   (8) rows: column updates inside a panel (skipped when the solved entry is
 //   exactly zero), the matrix-vector kernel for the rows past it.
-// tests/dynamics/lu_solve9_test.cc checks all three against Eigen bit for bit.
+// tests/integration/lu_solve9_test.cc checks all three against Eigen bit for bit.
 // The loops are fully unrolled (the pragmas), which GCC does not do by itself
 // for loops this long.
 #pragma once

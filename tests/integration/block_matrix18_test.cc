@@ -1,4 +1,4 @@
-#include "dynamics/block_matrix18.h"
+#include "integration/block_matrix18.h"
 
 #include <cmath>
 #include <cstring>
@@ -11,11 +11,11 @@
 
 #include "control/genome.h"
 #include "control/start_pose.h"
-#include "dynamics/fixed_size_ops.h"
-#include "dynamics/integrator.h"
+#include "integration/fixed_size_ops.h"
+#include "integration/integrator.h"
 #include "dynamics/observation.h"
-#include "dynamics/schur_linear_solver.h"
-#include "tests/dynamics/sundials_handles.h"
+#include "integration/schur_linear_solver.h"
+#include "tests/integration/sundials_handles.h"
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_linearsolver.h>

@@ -16,8 +16,8 @@ enum class MultistepMethod { kBdf, kAdams };
 
 // How CVODE's Newton systems (18x18) are stored and solved.
 enum class LinearSolver {
-  // the 9x9 Schur complement (dynamics/schur_linear_solver.h) of a matrix
-  // stored as its blocks (dynamics/block_matrix18.h); needs the analytic
+  // the 9x9 Schur complement (integration/schur_linear_solver.h) of a matrix
+  // stored as its blocks (integration/block_matrix18.h); needs the analytic
   // Jacobian. Bit-identical to kSchurComplement, with less copying.
   kSchurBlocks,
   kSchurComplement,  // the 9x9 Schur complement of a dense 18x18 matrix
@@ -55,7 +55,7 @@ struct IntegratorSettings {
   // weld yank the foot into place.
   bool project_on_plant = true;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
-  // (dynamics/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones
+  // (integration/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones
   // (the block Newton matrix has only its own fixed-size operations).
   // Bit-identical results either way; only the speed differs.
   bool fixed_size_ops = true;

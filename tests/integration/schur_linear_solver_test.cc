@@ -1,4 +1,4 @@
-#include "dynamics/schur_linear_solver.h"
+#include "integration/schur_linear_solver.h"
 
 #include <atomic>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
-#include "tests/dynamics/sundials_handles.h"
+#include "tests/integration/sundials_handles.h"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>

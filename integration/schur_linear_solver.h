@@ -5,7 +5,7 @@
 // is solved by factoring only the 9x9 Schur complement
 //   S = M22 - M21*M11^{-1}*M12 = M22 + gamma*M21
 // instead of the whole 18x18 matrix. It takes either of two matrices:
-// - the block matrix of dynamics/block_matrix18.h, which stores the upper
+// - the block matrix of integration/block_matrix18.h, which stores the upper
 //   blocks as diagonals and so has the structure by construction (CVODE then
 //   needs the analytic Jacobian: its difference quotients fill dense or band
 //   matrices only);

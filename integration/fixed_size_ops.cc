@@ -1,4 +1,4 @@
-#include "dynamics/fixed_size_ops.h"
+#include "integration/fixed_size_ops.h"
 
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_dense.h>

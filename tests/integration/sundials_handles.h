@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-#include "dynamics/fixed_size_ops.h"
+#include "integration/fixed_size_ops.h"
 
 namespace walkers {
 

@@ -1,4 +1,4 @@
-#include "dynamics/fixed_size_ops.h"
+#include "integration/fixed_size_ops.h"
 
 #include <cstring>
 #include <random>
@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/dynamics/sundials_handles.h"
+#include "tests/integration/sundials_handles.h"
 
 namespace walkers {
 namespace {

@@ -11,7 +11,7 @@
 // They compute exactly what SUNDIALS 6.4's serial vector and dense matrix
 // compute, operation for operation and in the same order (including
 // N_VLinearSum's special cases such as c*(x + y) for a == b), so results are
-// bit-identical with or without them; tests/dynamics/fixed_size_ops_test.cc
+// bit-identical with or without them; tests/integration/fixed_size_ops_test.cc
 // checks every replaced operation against the library's on random data.
 // The serial vector's fused operations stay disabled: the three CVODE uses
 // (N_VScaleAddMulti, N_VScaleVectorArray, N_VLinearCombination) run

@@ -3,14 +3,14 @@
 // The walker's Jacobian J = [[0, I], [A_q, A_v]] has this form, and so has
 // every Newton matrix CVODE makes of it, M = I - gamma*J (SUNMatScaleAddI).
 // Given to CVODE with the analytic Jacobian and the Schur solver
-// (dynamics/schur_linear_solver.h), it spares the 144 upper entries that are
+// (integration/schur_linear_solver.h), it spares the 144 upper entries that are
 // known zeros: CVODE's copies of its saved Jacobian and its scale-and-shift
 // touch 180 numbers instead of 324, and the solver reads the blocks instead of
 // checking the structure of a dense matrix (docs/performance.md).
 //
 // Each stored entry is computed with the arithmetic of SUNDIALS' dense matrix
 // (c*a, then + 1 on the diagonal), so CVODE's results are bit-identical with
-// this matrix or a dense one (tests/dynamics/block_matrix18_test.cc).
+// this matrix or a dense one (tests/integration/block_matrix18_test.cc).
 //
 // Operations: getid (SUNMATRIX_CUSTOM), clone, destroy, zero, copy,
 // scaleaddi, matvec and space; scaleadd (A = c*A + B) is left out, as CVODE's

@@ -1,10 +1,10 @@
-#include "dynamics/integrator.h"
+#include "integration/integrator.h"
 
-#include "dynamics/block_matrix18.h"
-#include "dynamics/fixed_size_ops.h"
+#include "integration/block_matrix18.h"
+#include "integration/fixed_size_ops.h"
 #include "dynamics/jacobian.h"
 #include "dynamics/planting.h"
-#include "dynamics/schur_linear_solver.h"
+#include "integration/schur_linear_solver.h"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>

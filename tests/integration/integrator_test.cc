@@ -1,4 +1,4 @@
-#include "dynamics/integrator.h"
+#include "integration/integrator.h"
 
 #include <cmath>
 #include <random>
@@ -30,8 +30,8 @@ Model GravityOnly() {
   return BuildModel(BodyOf(DefaultGenome()), options);
 }
 
-double TotalEnergy(const Model& m, const State& s, const Welds& welds = {}) {
-  const Observation o = Observe(m, s, welds);
+double TotalEnergy(const Model& m, const State& s) {
+  const Observation o = Observe(m, s);
   return o.kinetic + o.potential;
 }
 
@@ -52,7 +52,7 @@ TEST(IntegratorTest, GravityOnlyConservesEnergyOfSwingingLegs) {
   for (int i = 1; i <= 200; ++i) {
     ASSERT_TRUE(integrator.AdvanceTo(0.01 * i).ok());
     const double e = TotalEnergy(m, integrator.state());
-    kinetic_seen = std::max(kinetic_seen, Observe(m, integrator.state(), {}).kinetic);
+    kinetic_seen = std::max(kinetic_seen, Observe(m, integrator.state()).kinetic);
     ASSERT_NEAR(e, e0, 1e-7 * std::abs(e0)) << "t=" << integrator.time();
   }
   EXPECT_GT(kinetic_seen, 1.0);  // the legs really moved
@@ -125,7 +125,7 @@ TEST(IntegratorTest, PassiveDropComesToRestOnTheGroundAndNeverGainsEnergy) {
   // energy: never above its initial value (to the integration error)
   EXPECT_LE(e_max, e0 + 1e-6 * e0);
   // at rest on the ground: trunk lying on it, nearly no kinetic energy
-  const Observation end = Observe(m, integrator.state(), {});
+  const Observation end = Observe(m, integrator.state());
   EXPECT_TRUE(end.trunk_contact);
   EXPECT_LT(end.kinetic, 0.01);
   EXPECT_LT(integrator.state().v.head<2>().norm(), 1e-3);
@@ -234,10 +234,7 @@ TEST(IntegratorTest, RestartsAndRetriesWhenATorqueJumpDefeatsCvodesHistory) {
   // restart CVODE's error test cannot pass right after a jump, so AdvanceTo
   // must restart there and carry on
   const Model m = BuildModel(BodyOf(DefaultGenome()));
-  IntegratorSettings settings = Tight();
-  settings.relative_tolerance = 1e-8;
-  settings.absolute_tolerance_position = 1e-8;
-  settings.absolute_tolerance_velocity = 1e-6;
+  const IntegratorSettings settings = Tight();
   ASSERT_FALSE(settings.restart_on_torque_change);
   Integrator integrator(m, settings);
   const State start = StartState(m);

@@ -1,4 +1,4 @@
-#include "dynamics/schur_linear_solver.h"
+#include "integration/schur_linear_solver.h"
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -13,10 +13,10 @@
 #include <new>
 #include <type_traits>
 
-#include "dynamics/block_matrix18.h"
+#include "integration/block_matrix18.h"
 #include "dynamics/coords.h"
-#include "dynamics/fixed_size_ops.h"
-#include "dynamics/lu_solve9.h"
+#include "integration/fixed_size_ops.h"
+#include "integration/lu_solve9.h"
 
 namespace walkers {
 namespace {

@@ -1,4 +1,4 @@
-#include "dynamics/lu_solve9.h"
+#include "integration/lu_solve9.h"
 
 #include <cstring>
 #include <random>

@@ -1,4 +1,4 @@
-#include "dynamics/block_matrix18.h"
+#include "integration/block_matrix18.h"
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -7,7 +7,7 @@
 
 #include <new>
 
-#include "dynamics/fixed_size_ops.h"
+#include "integration/fixed_size_ops.h"
 
 namespace walkers {
 namespace {
