@@ -273,7 +273,16 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
     md += std::string("![") + fig + "](figures/" + fig + ".png)\n";
   }
   WriteFileAtomically(files.summary_md, md);
-  return summary;
+  // the evaluations of every learner's runs
+  ReproductionSummary returned = summary;
+  returned.evaluations = returned.falls = 0;
+  returned.evaluation_seconds = 0;
+  for (const RunData& d : data) {
+    returned.evaluations += d.evaluations;
+    returned.falls += d.falls;
+    returned.evaluation_seconds += d.evaluation_seconds;
+  }
+  return returned;
 }
 
 }  // namespace walkers

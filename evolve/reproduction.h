@@ -97,6 +97,7 @@ class Reproduction {
   ~Reproduction();
 
   // Runs (or resumes) every run, then writes the summary and figure data.
+  // Returns WriteReproductionResults's summary.
   ReproductionSummary Run(int threads, const ReproductionObserver& observer = {});
 
  private:
@@ -108,7 +109,9 @@ class Reproduction {
 };
 
 // Only the analysis: reads the finished runs in DIR and writes summary.json,
-// summary.md, walks.json and gallery.json.
+// summary.md, walks.json and gallery.json. Returns the first learner's
+// summary (the paper's statistics), but with the evaluations, falls and
+// evaluation time of every learner's runs.
 ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir);
 
 }  // namespace walkers

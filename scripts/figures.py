@@ -749,10 +749,10 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
     legend_above(bars, ncol=len(scaffolds),
                  title="final best: bars the mean, dots the replicates, "
                        "figures above: runs ending as tripods")
-    share = None
+    panels = []
     for i, learner in enumerate(learners):
-        ax = fig.add_subplot(grid[1, i], sharey=share)
-        share = share or ax
+        ax = fig.add_subplot(grid[1, i], sharey=panels[0] if panels else None)
+        panels.append(ax)
         for scaffold in scaffolds:
             group = [r for r in learner_runs
                      if r["learner"] == learner["name"] and r["case"] == scaffold["name"]]
@@ -761,11 +761,12 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
                 ax.plot(g, mean, color=scaffold["colour"])
         ax.set_title(learner["label"])
         ax.set_xlim(0, generations)
-        ax.set_ylim(bottom=0)
         ax.set_xlabel("generation")
         ax.grid(alpha=0.3, lw=0.5)
         if i == 0:
             ax.set_ylabel("mean best fitness")
+    # one scale for every learner's panel, from 0 to the highest mean best
+    panels[0].set_ylim(0, 1.05 * top)
     save(fig, out_dir, "learners")
 
 

@@ -98,9 +98,11 @@ TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheO
   for (const PlannedRun& run : PlanRuns(c)) names.push_back(run.name + ":" + run.config.learner);
   EXPECT_EQ(names, (std::vector<std::string>{"free-1:ga", "time-1:ga", "performance-1:ga", "pso-free-1:pso",
                                              "pso-time-1:pso", "pso-performance-1:pso"}));
-  Reproduction(c, Dir("r"), StartMode::kNew).Run(2);
+  const ReproductionSummary returned = Reproduction(c, Dir("r"), StartMode::kNew).Run(2);
+  EXPECT_EQ(returned.evaluations, 6 * 2 * 2) << "every learner's evaluations";
   const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
   EXPECT_EQ(summary.at("runs").size(), 3u) << "the paper's statistics are the first learner's";
+  EXPECT_EQ(summary.at("evaluations"), 3 * 2 * 2);
   EXPECT_EQ(summary.at("learner_runs").size(), 6u);
   EXPECT_EQ(summary.at("learners").size(), 2u);
   EXPECT_EQ(summary.at("learners")[1].at("name"), "pso");
