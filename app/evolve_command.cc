@@ -13,6 +13,7 @@ namespace {
 
 struct EvolveOptions {
   std::string scaffold_case;
+  std::string learner = DefaultLearner().name;
   std::string preset = "original";
   int generations = 4000;
   std::uint64_t seed = 1;
@@ -25,6 +26,7 @@ struct EvolveOptions {
 int RunEvolve(const EvolveOptions& opt) {
   RunConfig config;
   config.scaffold_case = ScaffoldCaseByName(opt.scaffold_case);
+  config.learner = opt.learner;
   config.preset = PresetByName(opt.preset);
   config.generations = opt.generations;
   config.seed = opt.seed;
@@ -37,7 +39,8 @@ int RunEvolve(const EvolveOptions& opt) {
     std::fprintf(stderr, "resuming %s after generation %d\n", opt.out.c_str(), run.completed_generations());
   }
 
-  Progress progress(std::string(ScaffoldCaseName(config.scaffold_case)) + "/" + config.preset.name);
+  const std::string learner = config.learner == DefaultLearner().name ? "" : config.learner + "/";
+  Progress progress(learner + ScaffoldCaseName(config.scaffold_case) + "/" + config.preset.name);
   run.Run([&](const GenerationSummary& s) { progress.Report(s); });
   progress.Finish();
 
@@ -53,9 +56,12 @@ int RunEvolve(const EvolveOptions& opt) {
 void AddEvolveCommand(CLI::App& app, Command* selected) {
   auto opt = std::make_shared<EvolveOptions>();
   CLI::App* sub = app.add_subcommand("evolve", "Evolve walkers under a scaffold (paper Algorithm 1)");
-  sub->add_option("--case", opt->scaffold_case, "Scaffold: free, time (eq. 7) or performance (eq. 8)")
+  sub->add_option("--case", opt->scaffold_case, "Scaffold on the trunk's length (paper §2.5)")
       ->required()
-      ->check(CLI::IsMember({"free", "time", "performance"}));
+      ->check(CLI::IsMember(ScaffoldCaseNames()));
+  sub->add_option("--learner", opt->learner, "Learner: the paper's GA or one of pagmo2's (docs/learners.md)")
+      ->check(CLI::IsMember(LearnerNames()))
+      ->capture_default_str();
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations to run")
       ->check(IntegerRange(1, kMaxGenerations))

@@ -15,6 +15,7 @@ namespace walkers::app {
 namespace {
 
 struct ReproduceOptions {
+  std::vector<std::string> learners = {DefaultLearner().name};
   std::string preset = "original";
   int generations = 4000;
   int replicates = 3;
@@ -26,6 +27,7 @@ struct ReproduceOptions {
 
 int RunReproduce(const ReproduceOptions& opt) {
   ReproductionConfig config;
+  config.learners = opt.learners;
   config.preset = PresetByName(opt.preset);
   config.generations = opt.generations;
   config.replicates = opt.replicates;
@@ -34,7 +36,7 @@ int RunReproduce(const ReproduceOptions& opt) {
   const int threads = ThreadsOrAllCores(opt.threads);
 
   const auto start = std::chrono::steady_clock::now();
-  const int total = 3 * config.replicates;
+  const int total = static_cast<int>(PlanRuns(config).size());
   int index = 0;
   // Time left for all runs, from this session's pace: generations are
   // counted as not done until their run starts and says how many it has.
@@ -98,7 +100,12 @@ int RunReproduce(const ReproduceOptions& opt) {
 void AddReproduceCommand(CLI::App& app, Command* selected) {
   auto opt = std::make_shared<ReproduceOptions>();
   CLI::App* sub = app.add_subcommand(
-      "reproduce", "Reproduce the paper: three scaffolds x replicates, statistics and figures");
+      "reproduce", "Reproduce the paper: three scaffolds x replicates (x learners), statistics and figures");
+  sub->add_option("--learners", opt->learners,
+                  "Learners to compare, comma-separated; the first is the one the paper's figures show")
+      ->delimiter(',')
+      ->check(CLI::IsMember(LearnerNames()))
+      ->capture_default_str();
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations per run")
       ->check(IntegerRange(1, kMaxGenerations))

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
+#include "evolve/learner.h"
 #include "evolve/run.h"
 
 namespace walkers {
@@ -21,7 +22,6 @@ using nlohmann::json;
 constexpr double kPaperCase3OverCase1 = 0.83;
 constexpr double kPaperCase2OverCase1 = 0.66;
 constexpr double kPaperBipedOverTripod = 1.375;
-constexpr int kPaperTripodFinals[3] = {0, 2, 0};  // of three runs, by case
 
 json Optional(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 
@@ -109,8 +109,8 @@ std::vector<int> ReportedGenerations(int generations) {
 
 ReproductionSummary Summarize(const std::vector<RunData>& runs) {
   ReproductionSummary s;
-  const ScaffoldCase cases[3] = {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance};
-  for (ScaffoldCase c : cases) {
+  for (const ScaffoldSpec& scaffold : Scaffolds()) {
+    const ScaffoldCase c = scaffold.id;
     std::vector<const RunData*> of_case;
     for (const RunData& r : runs) {
       if (r.scaffold_case == c) of_case.push_back(&r);
@@ -123,7 +123,7 @@ ReproductionSummary Summarize(const std::vector<RunData>& runs) {
     std::size_t generations = SIZE_MAX;
     for (const RunData* r : of_case) generations = std::min(generations, r->best_fitness.size());
     if (generations == 0 || generations == SIZE_MAX) {
-      throw std::runtime_error("case " + std::string(ScaffoldCaseName(c)) + " has a run with no generation");
+      throw std::runtime_error("case " + std::string(scaffold.name) + " has a run with no generation");
     }
     for (std::size_t g = 0; g < generations; ++g) {
       std::vector<double> values;
@@ -178,12 +178,11 @@ json SummaryToJson(const ReproductionSummary& s) {
     for (const auto& [g, m] : c.best_after) {
       best.push_back({{"generations", g}, {"mean", m.mean}, {"sd", m.sd}, {"replicates", m.n}});
     }
-    const int index = static_cast<int>(c.scaffold_case);
-    cases[ScaffoldCaseName(c.scaffold_case)] = {
-        {"runs", c.runs},
-        {"best_fitness_after", best},
-        {"tripod_finals", c.tripod_finals},
-        {"paper_tripod_finals_of_3", kPaperTripodFinals[index]}};
+    const ScaffoldSpec& scaffold = ScaffoldSpecOf(c.scaffold_case);
+    cases[scaffold.name] = {{"runs", c.runs},
+                            {"best_fitness_after", best},
+                            {"tripod_finals", c.tripod_finals},
+                            {"paper_tripod_finals_of_3", scaffold.paper_tripod_finals}};
   }
   return {{"cases", cases},
           {"case3_over_case1_share", {{"value", Optional(s.case3_over_case1)}, {"paper", kPaperCase3OverCase1}}},
@@ -222,10 +221,9 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
   md << " final best is a tripod | paper |\n|---|---|";
   for (std::size_t i = 0; i < columns.size(); ++i) md << "---|";
   md << "---|---|\n";
-  const char* names[3] = {"1, free", "2, time-constrained", "3, performance-based"};
   for (const CaseSummary& c : s.cases) {
-    const int index = static_cast<int>(c.scaffold_case);
-    md << "| " << names[index] << " | " << c.runs << " |";
+    const ScaffoldSpec& scaffold = ScaffoldSpecOf(c.scaffold_case);
+    md << "| " << scaffold.number() << ", " << scaffold.label << " | " << c.runs << " |";
     for (int g : columns) {
       const auto it = std::find_if(c.best_after.begin(), c.best_after.end(), [&](const auto& p) { return p.first == g; });
       if (it == c.best_after.end()) {
@@ -239,7 +237,7 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
         md << buf;
       }
     }
-    md << ' ' << c.tripod_finals << " of " << c.runs << " | " << kPaperTripodFinals[index] << " of 3 |\n";
+    md << ' ' << c.tripod_finals << " of " << c.runs << " | " << scaffold.paper_tripod_finals << " of 3 |\n";
   }
   md << "\n## Findings beside the paper's\n\n| finding | ours | paper |\n|---|---|---|\n";
   md << "| generations in which case 3's mean best fitness exceeds case 1's | " << pct(s.case3_over_case1)
@@ -263,6 +261,62 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
   std::snprintf(buf, sizeof(buf), "\n%ld evaluations in %.0f s of evaluation time (%.1f per second).\n", s.evaluations,
                 s.evaluation_seconds, s.evaluation_seconds > 0 ? s.evaluations / s.evaluation_seconds : 0.0);
   md << buf;
+  return md.str();
+}
+
+json LearnersToJson(const std::vector<LearnerSummary>& learners) {
+  json out = json::object();
+  for (const LearnerSummary& l : learners) {
+    json cases = json::object();
+    for (const CaseSummary& c : l.summary.cases) {
+      const MeanSd& final_best = c.best_after.back().second;
+      cases[ScaffoldSpecOf(c.scaffold_case).name] = {{"runs", c.runs},
+                                                      {"generations", c.best_after.back().first},
+                                                      {"final_best_mean", final_best.mean},
+                                                      {"final_best_sd", final_best.sd},
+                                                      {"tripod_finals", c.tripod_finals}};
+    }
+    out[l.learner] = {{"cases", cases},
+                      {"case3_over_case1_share", Optional(l.summary.case3_over_case1)},
+                      {"case2_over_case1_final", Optional(l.summary.case2_over_case1)}};
+  }
+  return out;
+}
+
+std::string LearnersToMarkdown(const std::vector<LearnerSummary>& learners) {
+  std::ostringstream md;
+  char buf[256];
+  auto pct = [&](const std::optional<double>& x) {
+    if (!x) return std::string("—");
+    std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *x);
+    return std::string(buf);
+  };
+  md << "## Learners under the scaffolds\n\n"
+     << "Final best fitness (mean ± sd over replicates; one replicate: its value) and the runs whose final best is a "
+        "tripod.\n\n| learner |";
+  for (const ScaffoldSpec& scaffold : Scaffolds()) md << " case " << scaffold.number() << ", " << scaffold.label << " |";
+  md << " generations in which case 3's mean best exceeds case 1's | case 2's final mean best over case 1's |\n|---|";
+  for (std::size_t i = 0; i < Scaffolds().size(); ++i) md << "---|";
+  md << "---|---|\n";
+  for (const LearnerSummary& l : learners) {
+    md << "| " << LearnerByName(l.learner).label << " (" << l.learner << ") |";
+    for (const ScaffoldSpec& scaffold : Scaffolds()) {
+      const auto it = std::find_if(l.summary.cases.begin(), l.summary.cases.end(),
+                                   [&](const CaseSummary& c) { return c.scaffold_case == scaffold.id; });
+      if (it == l.summary.cases.end()) {
+        md << " — |";
+        continue;
+      }
+      const MeanSd& m = it->best_after.back().second;
+      if (m.n > 1) {
+        std::snprintf(buf, sizeof(buf), " %.2f ± %.2f, %d of %d tripods |", m.mean, m.sd, it->tripod_finals, it->runs);
+      } else {
+        std::snprintf(buf, sizeof(buf), " %.2f, %d of %d tripods |", m.mean, it->tripod_finals, it->runs);
+      }
+      md << buf;
+    }
+    md << ' ' << pct(l.summary.case3_over_case1) << " | " << pct(l.summary.case2_over_case1) << " |\n";
+  }
   return md.str();
 }
 

@@ -27,6 +27,7 @@ struct EvaluatedSummary {
 
 // What the analysis needs of one run.
 struct RunData {
+  std::string learner;  // its name in Learners()
   ScaffoldCase scaffold_case = ScaffoldCase::kFree;
   int replicate = 1;
   std::string name;                   // "free-1"
@@ -75,5 +76,18 @@ ReproductionSummary Summarize(const std::vector<RunData>& runs);
 // The summary with the paper's values beside ours where the paper gives one.
 nlohmann::json SummaryToJson(const ReproductionSummary& s);
 std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& title);
+
+// One learner's summary (Summarize of its runs), for the comparison of
+// learners under the scaffolds.
+struct LearnerSummary {
+  std::string learner;  // its name in Learners()
+  ReproductionSummary summary;
+};
+
+// Per learner and case: the final best fitness over replicates and the runs
+// whose final best is a tripod; per learner, the scaffolds' findings (case 3
+// against case 1, case 2 against case 1).
+nlohmann::json LearnersToJson(const std::vector<LearnerSummary>& learners);
+std::string LearnersToMarkdown(const std::vector<LearnerSummary>& learners);
 
 }  // namespace walkers

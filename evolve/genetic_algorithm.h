@@ -1,17 +1,16 @@
 // The genetic algorithm of paper Algorithm 1 with the authors' settings
-// (MODEL.md §5): an all-time archive of the fittest, mutation and crossover
-// children drawn from it, duplicates redrawn.
+// (MODEL.md §5), the default learner: children drawn from the run's all-time
+// archive by mutation and crossover, duplicates drawn again.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <set>
-#include <string>
 #include <vector>
 
-#include "control/evaluation.h"
-#include "control/genome.h"
-#include "control/preset.h"
-#include "evolve/scaffold.h"
+#include "evolve/individual.h"
+#include "evolve/learner.h"
+#include "evolve/random.h"
 #include "evolve/variation.h"
 
 namespace walkers {
@@ -34,55 +33,40 @@ struct GeneticAlgorithmConfig {
   int crossover_children() const { return population - mutation_children; }
 };
 
-struct Individual {
-  int generation = 0;
-  int child = 0;
-  std::string parents;  // "" for the default genome, "g/c" for a mutant, "g/c+g/c" for a crossover child
-  Genome genome;
-  EvaluationResult result;
-
-  std::string id() const { return std::to_string(generation) + "/" + std::to_string(child); }
-  double fitness() const { return result.fitness; }
-};
-
-// The archive's order: the fitter first; at equal fitness the older.
-bool Fitter(const Individual& a, const Individual& b);
-
-// The all-time fittest: best first; equal fitness keeps the older individual.
-class Archive {
+// Paper Algorithm 1. Generation 0 is the default genome and its mutants;
+// later generations make mutation children (parents drawn from a shuffled
+// archive without replacement) and crossover children (the mean of two
+// parents drawn without replacement, then mutated). Each child draws from its
+// own stream (seed, generation, child); a child drawn again continues it.
+// Its state is the run's archive: it keeps none of its own.
+class GeneticAlgorithm : public Learner {
  public:
-  explicit Archive(int capacity) : capacity_(capacity) {}
-  void Merge(const std::vector<Individual>& children);
-  const std::vector<Individual>& members() const { return members_; }
-  bool empty() const { return members_.empty(); }
-  const Individual& best() const { return members_.front(); }
-  double AverageOfBest(int n) const;  // mean fitness of the best n (or of all, if fewer)
-  double Mean() const;
-  void Restore(std::vector<Individual> members) { members_ = std::move(members); }
+  GeneticAlgorithm(const LearnerSpec& spec, const GeneticAlgorithmConfig& config) : Learner(spec), config_(config) {}
+
+  // Generation 0: the default genome and population-1 mutants of it. Throws
+  // std::runtime_error for a later generation with an archive of fewer than two.
+  std::vector<Individual> Propose(const BreedingInputs& in, const Archive& archive) override;
+  // The child's next draw from its parent (or its parents' mean) and stream.
+  void Redraw(const BreedingInputs& in, const Genome& proposal, Random* rng, Individual* child) override;
+  void Tell(const BreedingInputs&, const std::vector<Individual>&) override {}
 
  private:
-  int capacity_;
-  std::vector<Individual> members_;
+  // what a child of this generation is drawn from
+  struct Draw {
+    Genome base;  // its parent, or its parents' mean
+    Random rng;   // its stream
+  };
+  GeneticAlgorithmConfig config_;
+  std::vector<Draw> draws_;
 };
 
-// Everything that decides a generation's children.
-struct BreedingInputs {
-  std::uint64_t seed = 1;
-  int generation = 0;
-  double body_ceiling = kBodyCeiling;
-  MutationRules rules;
-};
+std::unique_ptr<Learner> MakeGeneticAlgorithm(const LearnerSpec& spec, const GeneticAlgorithmConfig& config,
+                                              std::uint64_t seed);
 
-// The children of one generation, in order, not yet evaluated. Generation 0 is
-// the default genome and its mutants; later ones come from the archive.
-// Every accepted child's key is added to `seen`; a child whose key was seen is
-// drawn again (a run that cannot find a new genome in 100000 draws throws).
+// The children of one generation, in order, not yet evaluated: the GA's
+// proposals with the GA's rules applied (AdmitChildren). Every accepted
+// child's key is added to `seen`; a child whose key was seen is drawn again.
 std::vector<Individual> Breed(const GeneticAlgorithmConfig& config, const BreedingInputs& in, const Archive& archive,
                               std::set<GenomeKey>* seen);
-
-// Evaluates every individual on `threads` worker threads. Results depend only
-// on the genomes, never on the threads.
-void EvaluateAll(std::vector<Individual>* individuals, const Preset& preset, const EvaluationSettings& settings,
-                 int threads);
 
 }  // namespace walkers

@@ -20,6 +20,9 @@ class Random {
   // shuffles use these.
   static constexpr std::uint64_t kMutationParents = 1000;
   static constexpr std::uint64_t kCrossoverParents = 1001;
+  // kRedraws + child: the redraws of a child whose proposal was a duplicate
+  // (for learners other than the GA, which draws again from its own streams)
+  static constexpr std::uint64_t kRedraws = std::uint64_t{1} << 32;
 
   Random(std::uint64_t seed, std::uint64_t generation, std::uint64_t stream)
       : engine_(Mix(Mix(Mix(seed) ^ generation) ^ stream)) {}

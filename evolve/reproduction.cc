@@ -13,6 +13,13 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 void ReproductionConfig::Validate() const {
+  if (learners.empty()) throw std::invalid_argument("learners: at least one learner is needed");
+  for (std::size_t i = 0; i < learners.size(); ++i) {
+    LearnerByName(learners[i]);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (learners[j] == learners[i]) throw std::invalid_argument("learners: '" + learners[i] + "' is given twice");
+    }
+  }
   RequireInRange("replicates", replicates, 1, kMaxReplicates);
   if (seed > kMaxSeed - static_cast<std::uint64_t>(replicates - 1)) {
     throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
@@ -40,10 +47,16 @@ std::vector<std::string> ReproductionFiles::Names() {
 
 namespace {
 
-// "<case>-<replicate>"
+// "<case>-<replicate>" or "<learner>-<case>-<replicate>"
 bool IsRunName(const std::string& name) {
-  for (ScaffoldCase c : {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance}) {
-    const std::string prefix = std::string(ScaffoldCaseName(c)) + "-";
+  std::vector<std::string> prefixes;
+  for (const ScaffoldSpec& scaffold : Scaffolds()) {
+    prefixes.push_back(std::string(scaffold.name) + "-");
+    for (const LearnerSpec& learner : Learners()) {
+      prefixes.push_back(std::string(learner.name) + "-" + scaffold.name + "-");
+    }
+  }
+  for (const std::string& prefix : prefixes) {
     if (name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
         name.find_first_not_of("0123456789", prefix.size()) == std::string::npos) {
       return true;
@@ -62,20 +75,47 @@ std::vector<std::string> ReproductionNames(const std::string& dir) {
   return names;
 }
 
+// "ga, cmaes"
+std::string Joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 }  // namespace
+
+json ScaffoldsJson() {
+  json out = json::array();
+  for (const ScaffoldSpec& s : Scaffolds()) out.push_back({{"name", s.name}, {"label", s.label}, {"colour", s.colour}});
+  return out;
+}
+
+json LearnersJson(const std::vector<std::string>& learners) {
+  json out = json::array();
+  for (const std::string& name : learners) {
+    const LearnerSpec& l = LearnerByName(name);
+    out.push_back({{"name", l.name}, {"label", l.label}, {"colour", l.colour}});
+  }
+  return out;
+}
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config) {
   std::vector<PlannedRun> runs;
-  for (ScaffoldCase c : {ScaffoldCase::kFree, ScaffoldCase::kTime, ScaffoldCase::kPerformance}) {
-    for (int r = 1; r <= config.replicates; ++r) {
-      PlannedRun run{c, r, std::string(ScaffoldCaseName(c)) + "-" + std::to_string(r), RunConfig{}};
-      run.config.scaffold_case = c;
-      run.config.preset = config.preset;
-      run.config.generations = config.generations;
-      run.config.seed = config.seed + static_cast<std::uint64_t>(r - 1);
-      run.config.ga = config.ga;
-      run.config.evaluation = config.evaluation;
-      runs.push_back(run);
+  for (const std::string& learner : config.learners) {
+    // the GA's runs keep the names of the paper's reproduction
+    const std::string prefix = learner == DefaultLearner().name ? "" : learner + "-";
+    for (const ScaffoldSpec& scaffold : Scaffolds()) {
+      for (int r = 1; r <= config.replicates; ++r) {
+        PlannedRun run{scaffold.id, r, prefix + scaffold.name + "-" + std::to_string(r), RunConfig{}};
+        run.config.learner = learner;
+        run.config.scaffold_case = scaffold.id;
+        run.config.preset = config.preset;
+        run.config.generations = config.generations;
+        run.config.seed = config.seed + static_cast<std::uint64_t>(r - 1);
+        run.config.ga = config.ga;
+        run.config.evaluation = config.evaluation;
+        runs.push_back(run);
+      }
     }
   }
   return runs;
@@ -140,15 +180,35 @@ ReproductionSummary Reproduction::Run(int threads, const ReproductionObserver& o
 
 ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir) {
   const std::vector<PlannedRun> plan = PlanRuns(config);
-  std::vector<RunData> data;
+  const std::string& primary = config.learners.front();
+  std::vector<RunData> data, primary_data;
   const auto fitness_or_null = [](const std::optional<EvaluatedSummary>& best) {
     return best ? json(best->fitness) : json(nullptr);
   };
-  json runs = json::array();
+  json runs = json::array(), learner_runs = json::array();
   json gallery = json::array();
   for (const PlannedRun& run : plan) {
     const std::string run_dir = (fs::path(dir) / run.name).string();
     data.push_back(LoadRunData(run_dir, run.scaffold_case, run.replicate, run.name));
+    data.back().learner = run.config.learner;
+    const json run_json = {{"case", ScaffoldCaseName(run.scaffold_case)},
+                           {"replicate", run.replicate},
+                           {"dir", run.name},
+                           {"seed", run.config.seed},
+                           {"final_best_fitness", data.back().best_fitness.back()},
+                           {"final_best_gait", data.back().best_is_tripod.back() ? "tripod" : "biped"},
+                           // the best of all the run's evaluations, by gait (null: none that did not fall)
+                           {"best_biped_fitness", fitness_or_null(data.back().best_biped)},
+                           {"best_tripod_fitness", fitness_or_null(data.back().best_tripod)},
+                           {"evaluations", data.back().evaluations},
+                           {"evaluation_seconds", data.back().evaluation_seconds}};
+    json with_learner = run_json;
+    with_learner["learner"] = run.config.learner;
+    learner_runs.push_back(with_learner);
+    // the paper's statistics, walks, gallery and figures 4-9: the first learner's
+    if (run.config.learner != primary) continue;
+    primary_data.push_back(data.back());
+    runs.push_back(run_json);
     // the gallery, standing: the run's final best and, when that is a biped,
     // the best tripod the run evaluated
     const Individual best = LoadArchive(RunFiles(run_dir).archive, run.config).front();
@@ -167,19 +227,17 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
     if (best.result.gait != Gait::kTripod && tripod) {
       add_to_gallery(run.name + " tripod", tripod->id, "tripod", tripod->fitness, tripod->genome);
     }
-    runs.push_back({{"case", ScaffoldCaseName(run.scaffold_case)},
-                    {"replicate", run.replicate},
-                    {"dir", run.name},
-                    {"seed", run.config.seed},
-                    {"final_best_fitness", data.back().best_fitness.back()},
-                    {"final_best_gait", data.back().best_is_tripod.back() ? "tripod" : "biped"},
-                    // the best of all the run's evaluations, by gait (null: none that did not fall)
-                    {"best_biped_fitness", fitness_or_null(data.back().best_biped)},
-                    {"best_tripod_fitness", fitness_or_null(data.back().best_tripod)},
-                    {"evaluations", data.back().evaluations},
-                    {"evaluation_seconds", data.back().evaluation_seconds}});
   }
-  const ReproductionSummary summary = Summarize(data);
+  const ReproductionSummary summary = Summarize(primary_data);
+  // every learner's runs, each learner's apart
+  std::vector<LearnerSummary> by_learner;
+  for (const std::string& learner : config.learners) {
+    std::vector<RunData> of_learner;
+    for (const RunData& d : data) {
+      if (d.learner == learner) of_learner.push_back(d);
+    }
+    by_learner.push_back({learner, Summarize(of_learner)});
+  }
 
   // the best biped's and the best tripod's walks, again, frame by frame
   json walks = {{"biped", nullptr}, {"tripod", nullptr}};
@@ -197,21 +255,40 @@ ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, c
   out["generations"] = config.generations;
   out["replicates"] = config.replicates;
   out["seed"] = config.seed;
-  out["runs"] = runs;
+  out["scaffolds"] = ScaffoldsJson();  // the figures' list of cases
+  out["runs"] = runs;                  // the first learner's
+  out["learners"] = LearnersJson(config.learners);
+  out["learner_comparison"] = LearnersToJson(by_learner);
+  out["learner_runs"] = learner_runs;  // every learner's
   const ReproductionFiles files(dir);
   WriteFileAtomically(files.summary_json, out.dump(2) + "\n");
   WriteFileAtomically(files.walks, walks.dump() + "\n");
   WriteFileAtomically(files.gallery, json{{"individuals", gallery}}.dump(2) + "\n");
 
-  std::string md = SummaryToMarkdown(summary, "Reproduction: " + std::to_string(config.replicates) + " replicate(s) x " +
-                                                  std::to_string(config.generations) + " generations, preset " +
-                                                  config.preset.name);
+  const bool compared = config.learners.size() > 1;
+  std::string title = "Reproduction: " + std::to_string(config.replicates) + " replicate(s) x " +
+                      std::to_string(config.generations) + " generations, preset " + config.preset.name;
+  if (compared) title += ", learners " + Joined(config.learners);
+  std::string md = SummaryToMarkdown(summary, title);
+  if (compared) {
+    md += "\nThe tables above are the " + std::string(LearnerByName(primary).label) + "'s (" + primary +
+          "): its runs alone.\n\n" + LearnersToMarkdown(by_learner) + "\n![learners](figures/learners.png)\n";
+  }
   md += "\n## Figures\n\n";
   for (const char* fig : {"fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals"}) {
     md += std::string("![") + fig + "](figures/" + fig + ".png)\n";
   }
   WriteFileAtomically(files.summary_md, md);
-  return summary;
+  // the evaluations of every learner's runs
+  ReproductionSummary returned = summary;
+  returned.evaluations = returned.falls = 0;
+  returned.evaluation_seconds = 0;
+  for (const RunData& d : data) {
+    returned.evaluations += d.evaluations;
+    returned.falls += d.falls;
+    returned.evaluation_seconds += d.evaluation_seconds;
+  }
+  return returned;
 }
 
 }  // namespace walkers

@@ -1,7 +1,9 @@
 // A reproduction of the paper's results: the three scaffolds, each with
-// several replicate runs, then their statistics and the data of the figures.
+// several replicate runs of each learner, then their statistics and the data
+// of the figures.
 //
-// DIR/<case>-<replicate>/   one evolution run each (evolve/run.h)
+// DIR/<case>-<replicate>/   one evolution run each (evolve/run.h) of the GA;
+// DIR/<learner>-<case>-<replicate>/  of another learner (evolve/learner.h)
 // DIR/summary.json          statistics beside the paper's values (evolve/analysis.h)
 // DIR/summary.md            the same as tables a person reads
 // DIR/walks.json            the best biped's and best tripod's walks (control/walk_record.h)
@@ -20,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "control/evaluation.h"
 #include "control/preset.h"
 #include "evolve/analysis.h"
@@ -31,6 +35,9 @@ namespace walkers {
 constexpr int kMaxReplicates = 1000;
 
 struct ReproductionConfig {
+  // the learners compared, each under every scaffold; the first is the one
+  // the paper's statistics and figures 4-9 show
+  std::vector<std::string> learners = {DefaultLearner().name};
   Preset preset = OriginalPreset();
   int generations = 4000;
   int replicates = 3;
@@ -38,8 +45,9 @@ struct ReproductionConfig {
   GeneticAlgorithmConfig ga;
   EvaluationSettings evaluation;
 
-  // Every run's configuration (RunConfig::Validate), and seed + replicates - 1
-  // within the seeds' range. Throws std::invalid_argument naming the field.
+  // Every run's configuration (RunConfig::Validate), seed + replicates - 1
+  // within the seeds' range, and at least one learner, none twice. Throws
+  // std::invalid_argument naming the field.
   void Validate() const;
 };
 
@@ -55,11 +63,17 @@ struct ReproductionFiles {
 struct PlannedRun {
   ScaffoldCase scaffold_case;
   int replicate;
-  std::string name;  // "<case>-<replicate>"
-  RunConfig config;
+  std::string name;  // "<case>-<replicate>" for the GA, "<learner>-<case>-<replicate>" for another
+  RunConfig config;  // its learner too
 };
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config);
+
+// The scaffolds as summary.json lists them for the figure script: name, label
+// and colour of each, in the paper's order.
+nlohmann::json ScaffoldsJson();
+// The reproduction's learners, likewise, in the order given.
+nlohmann::json LearnersJson(const std::vector<std::string>& learners);
 
 // Called before each run starts (with how many generations it has done) and
 // after each of its generations.
@@ -83,6 +97,7 @@ class Reproduction {
   ~Reproduction();
 
   // Runs (or resumes) every run, then writes the summary and figure data.
+  // Returns WriteReproductionResults's summary.
   ReproductionSummary Run(int threads, const ReproductionObserver& observer = {});
 
  private:
@@ -94,7 +109,9 @@ class Reproduction {
 };
 
 // Only the analysis: reads the finished runs in DIR and writes summary.json,
-// summary.md, walks.json and gallery.json.
+// summary.md, walks.json and gallery.json. Returns the first learner's
+// summary (the paper's statistics), but with the evaluations, falls and
+// evaluation time of every learner's runs.
 ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir);
 
 }  // namespace walkers

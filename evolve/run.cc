@@ -80,13 +80,18 @@ json MembersToJson(const std::vector<Individual>& members) {
   return out;
 }
 
+// The learner of a run, in its files: named only when it is not the paper's GA.
+bool NamesLearner(const RunConfig& c) { return c.learner != DefaultLearner().name; }
+
 // archive.json's content
 json ArchiveFileJson(const RunConfig& c, int completed, double initial_fitness, const std::vector<Individual>& members) {
-  return {{"case", ScaffoldCaseName(c.scaffold_case)},
-          {"preset", c.preset.name},
-          {"generations", completed},
-          {"initial_fitness", initial_fitness},
-          {"archive", MembersToJson(members)}};
+  json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
+              {"preset", c.preset.name},
+              {"generations", completed},
+              {"initial_fitness", initial_fitness},
+              {"archive", MembersToJson(members)}};
+  if (NamesLearner(c)) out["learner"] = c.learner;
+  return out;
 }
 
 // the keys of a JSON object
@@ -230,12 +235,18 @@ void RequireSame(const json& stored, const json& requested, const std::string& s
 }  // namespace
 
 void RunConfig::Validate() const {
+  const LearnerSpec& spec = LearnerByName(learner);
   RequireInRange("generations", generations, 1, kMaxGenerations);
   if (seed > kMaxSeed) {
     throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
                                 std::to_string(kMaxSeed) + "]");
   }
   ga.Validate();
+  if (ga.population < spec.min_population) {
+    throw std::invalid_argument("population = " + std::to_string(ga.population) + " is outside its allowed range [" +
+                                std::to_string(spec.min_population) + ", " + std::to_string(kMaxPopulation) +
+                                "] for the learner " + spec.name);
+  }
   for (const EvaluationField& field : kEvaluationFields) {
     RequireInRange(std::string("evaluation.") + field.key, Of(field, evaluation), field.range);
   }
@@ -245,24 +256,29 @@ void RunConfig::Validate() const {
 json RunConfigToJson(const RunConfig& c) {
   json evaluation = {{"max_order", c.evaluation.integrator.max_order}};
   for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, c.evaluation);
-  return {{"case", ScaffoldCaseName(c.scaffold_case)},
-          {"preset", c.preset.name},
-          {"generations", c.generations},
-          {"seed", c.seed},
-          {"population", c.ga.population},
-          {"archive_size", c.ga.archive_size},
-          {"mutation_children", c.ga.mutation_children},
-          {"mutation_probability", c.ga.mutation_probability},
-          {"evaluation", evaluation}};
+  json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
+              {"preset", c.preset.name},
+              {"generations", c.generations},
+              {"seed", c.seed},
+              {"population", c.ga.population},
+              {"archive_size", c.ga.archive_size},
+              {"mutation_children", c.ga.mutation_children},
+              {"mutation_probability", c.ga.mutation_probability},
+              {"evaluation", evaluation}};
+  if (NamesLearner(c)) out["learner"] = c.learner;
+  return out;
 }
 
 RunConfig RunConfigFromJson(const json& j, const std::string& source) {
   try {
     const json keys = RunConfigToJson(RunConfig{});
     const JsonFields f(j, source);
-    f.RequireOnly(KeysOf(keys));
+    std::vector<std::string> known = KeysOf(keys);
+    known.push_back("learner");  // absent: the paper's GA
+    f.RequireOnly(known);
     RunConfig c;
     c.scaffold_case = ScaffoldCaseByName(f.String("case"));
+    if (j.contains("learner")) c.learner = f.OneOf("learner", LearnerNames());
     c.preset = PresetByName(f.String("preset"));
     c.generations = IntField(f, "generations");
     c.seed = f.Unsigned("seed", kMaxSeed);
@@ -286,18 +302,24 @@ RunConfig ParseRunConfig(const std::string& text, const std::string& source) {
 }
 
 json CheckpointToJson(const Checkpoint& cp) {
-  return {{"format", kCheckpointFormat},
-          {"completed_generations", cp.completed_generations},
-          {"initial_fitness", cp.initial_fitness},
-          {"evaluations_bytes", cp.evaluations_bytes},
-          {"generations_bytes", cp.generations_bytes},
-          {"archive", MembersToJson(cp.archive)}};
+  json out = {{"format", kCheckpointFormat},
+              {"completed_generations", cp.completed_generations},
+              {"initial_fitness", cp.initial_fitness},
+              {"evaluations_bytes", cp.evaluations_bytes},
+              {"generations_bytes", cp.generations_bytes},
+              {"archive", MembersToJson(cp.archive)}};
+  if (!cp.learner.is_null()) out["learner"] = cp.learner;
+  return out;
 }
 
 Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source) {
   const json j = ParseJson(text, source);
   const JsonFields f(j, source);
-  f.RequireOnly(KeysOf(CheckpointToJson(Checkpoint{})));
+  // a learner with a state of its own keeps it here; the GA has none
+  const std::unique_ptr<Learner> learner = MakeLearner(config.learner, config.ga, config.seed);
+  std::vector<std::string> known = KeysOf(CheckpointToJson(Checkpoint{}));
+  if (learner->KeepsState()) known.push_back("learner");
+  f.RequireOnly(known);
   const std::int64_t format = f.Integer("format", std::numeric_limits<std::int64_t>::min(),
                                         std::numeric_limits<std::int64_t>::max());
   if (format != kCheckpointFormat) {
@@ -310,6 +332,10 @@ Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, con
   cp.evaluations_bytes = f.Unsigned("evaluations_bytes", std::numeric_limits<std::int64_t>::max());
   cp.generations_bytes = f.Unsigned("generations_bytes", std::numeric_limits<std::int64_t>::max());
   cp.archive = ArchiveFromJson(f, cp.completed_generations, config.ga);
+  if (learner->KeepsState()) {
+    cp.learner = f.Get("learner");
+    learner->Restore(cp.learner, cp.completed_generations, source);
+  }
   return cp;
 }
 
@@ -320,6 +346,9 @@ std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& co
   if (f.String("case") != ScaffoldCaseName(config.scaffold_case) || f.String("preset") != config.preset.name) {
     f.Fail("case", "and 'preset' are not the run's (" + std::string(ScaffoldCaseName(config.scaffold_case)) + ", " +
                        config.preset.name + ")");
+  }
+  if (NamesLearner(config) && f.String("learner") != config.learner) {
+    f.Fail("learner", "is not the run's (" + config.learner + ")");
   }
   const int completed = static_cast<int>(f.Integer("generations", 1, config.generations));
   f.Number("initial_fitness", kInitialFitnessRange);
@@ -353,10 +382,11 @@ EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, Star
     : config_(config),
       files_(dir),
       threads_(std::max(1, threads)),
-      scaffold_(MakeScaffold(config.scaffold_case, config.preset)),
       archive_(config.ga.archive_size) {
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
+  scaffold_ = MakeScaffold(config.scaffold_case, config.preset);
+  learner_ = MakeLearner(config.learner, config.ga, config.seed);
   OpenedFolder opened = OpenResultsFolder(dir, "run", mode == StartMode::kResume, files_.checkpoint);
   lock_.emplace(std::move(opened.lock));
   const bool has_aside = opened.stopped_force;
@@ -415,7 +445,13 @@ void EvolutionRun::CheckNoResultsWithoutCheckpoint() const {
 void EvolutionRun::Resume() {
   // everything is read and checked before anything is written
   const RunConfig stored = RunConfigFromJson(LoadJsonFile(files_.config), files_.config);
-  RequireSame(RunConfigToJson(stored), RunConfigToJson(config_), files_.config);
+  // the learner compared too, the GA's included, which config.json leaves unnamed
+  const auto compared = [](const RunConfig& c) {
+    json j = RunConfigToJson(c);
+    j["learner"] = c.learner;
+    return j;
+  };
+  RequireSame(compared(stored), compared(config_), files_.config);
   if (!fs::exists(files_.checkpoint)) {
     // killed before its first generation completed: start it again
     CheckNoResultsWithoutCheckpoint();
@@ -460,6 +496,7 @@ void EvolutionRun::Resume() {
   completed_ = cp.completed_generations;
   initial_fitness_ = cp.initial_fitness;
   archive_.Restore(std::move(cp.archive));
+  if (learner_->KeepsState()) learner_->Restore(cp.learner, cp.completed_generations, files_.checkpoint);
   seen_ = std::move(seen);
   // drop what was written after the checkpoint
   TruncateFile(files_.evaluations, cp.evaluations_bytes);
@@ -472,19 +509,25 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
   MutationRules rules;
   rules.probability = config_.ga.mutation_probability;
   rules.body_gene = config_.preset.body_gene_mutation;
-  rules.scaffold_case = config_.scaffold_case;
+  rules.body_redraw = ScaffoldSpecOf(config_.scaffold_case).authors_body_redraw;
 
   for (int g = completed_; g < config_.generations; ++g) {
     // the scaffold sets this generation's ceiling from what the archive
     // achieved so far; the authors' evolver starts that measure at InitF
     const double achieved = g == 0 ? initial_fitness_ : archive_.AverageOfBest(3);
     const double ceiling = scaffold_->Ceiling({g, achieved, initial_fitness_});
-    std::vector<Individual> children = Breed(config_.ga, {config_.seed, g, ceiling, rules}, archive_, &seen_);
+    // the learner proposes this generation's children under the scaffold's
+    // ceiling; the GA's rules admit them (clamped into the bounds, duplicates
+    // drawn again)
+    const BreedingInputs in{config_.seed, g, ceiling, rules};
+    std::vector<Individual> children = learner_->Propose(in, archive_);
+    AdmitChildren(*learner_, in, &children, &seen_);
 
     const auto start = std::chrono::steady_clock::now();
     EvaluateAll(&children, config_.preset, config_.evaluation, threads_);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    learner_->Tell(in, children);
     archive_.Merge(children);
 
     GenerationSummary s;
@@ -520,7 +563,8 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
 }
 
 void EvolutionRun::WriteCheckpoint(std::uint64_t evaluations_bytes, std::uint64_t generations_bytes) {
-  const Checkpoint cp{completed_, initial_fitness_, evaluations_bytes, generations_bytes, archive_.members()};
+  const Checkpoint cp{completed_,          initial_fitness_, evaluations_bytes, generations_bytes, archive_.members(),
+                      learner_->State()};
   WriteFileAtomically(files_.checkpoint, CheckpointToJson(cp).dump() + "\n");
 }
 

@@ -20,12 +20,13 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 #include "control/evaluation.h"
 #include "control/preset.h"
 #include "evolve/files.h"
 #include "evolve/genetic_algorithm.h"
+#include "evolve/learner.h"
 #include "evolve/scaffold.h"
 
 namespace walkers {
@@ -36,10 +37,11 @@ constexpr std::uint64_t kMaxSeed = 4294967295;
 
 struct RunConfig {
   ScaffoldCase scaffold_case = ScaffoldCase::kFree;
+  std::string learner = DefaultLearner().name;  // Learners(): the paper's GA, or another
   Preset preset = OriginalPreset();
   int generations = 4000;
   std::uint64_t seed = 1;
-  GeneticAlgorithmConfig ga;
+  GeneticAlgorithmConfig ga;  // the GA's settings; its sizes are every learner's
   EvaluationSettings evaluation;
 
   // Checks every constraint a run needs from its first generation to its
@@ -48,6 +50,8 @@ struct RunConfig {
   void Validate() const;
 };
 
+// config.json's content. "learner" is written only for a learner other than
+// the paper's GA, so that the GA's runs keep their files.
 nlohmann::json RunConfigToJson(const RunConfig& config);
 // config.json's content: every field present, typed and in range, and no
 // other. Throws std::runtime_error whose message starts with `source`.
@@ -62,6 +66,7 @@ struct Checkpoint {
   std::uint64_t evaluations_bytes = 0;  // the CSV files' sizes after that generation
   std::uint64_t generations_bytes = 0;
   std::vector<Individual> archive;      // best first
+  nlohmann::json learner;               // the learner's state (Learner::State); null for the GA
 };
 
 nlohmann::json CheckpointToJson(const Checkpoint& checkpoint);
@@ -69,8 +74,10 @@ nlohmann::json CheckpointToJson(const Checkpoint& checkpoint);
 // strictly: every field present, typed and in range; at least one and at most
 // config.generations generations; the archive as large as that many
 // generations of config.ga fill it, best first, each member's generation and
-// child within the run and its genome valid. Throws std::runtime_error whose
-// message starts with `source` and names the field.
+// child within the run and its genome valid; the learner's state, for a
+// learner that keeps one, one that learner restores (Learner::Restore).
+// Throws std::runtime_error whose message starts with `source` and names the
+// field.
 Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source);
 
 // archive.json of a finished run configured as `config`, checked as a
@@ -132,6 +139,7 @@ class EvolutionRun {
 
   int completed_generations() const { return completed_; }
   const Archive& archive() const { return archive_; }
+  const Learner& learner() const { return *learner_; }
   double initial_fitness() const { return initial_fitness_; }
   const RunFiles& files() const { return files_; }
 
@@ -148,6 +156,7 @@ class EvolutionRun {
   std::unique_ptr<SetAside> replaced_;  // under kForce, until the first checkpoint
   int threads_;
   std::unique_ptr<Scaffold> scaffold_;
+  std::unique_ptr<Learner> learner_;
   Archive archive_;
   std::set<GenomeKey> seen_;
   double initial_fitness_ = kAuthorsInitialFitness;

@@ -51,35 +51,46 @@ class PerformanceScaffold : public Scaffold {
 
 }  // namespace
 
-const char* ScaffoldCaseName(ScaffoldCase c) {
-  switch (c) {
-    case ScaffoldCase::kFree:
-      return "free";
-    case ScaffoldCase::kTime:
-      return "time";
-    case ScaffoldCase::kPerformance:
-      return "performance";
-  }
-  return "?";
+const std::vector<ScaffoldSpec>& Scaffolds() {
+  static const std::vector<ScaffoldSpec> scaffolds = {
+      {ScaffoldCase::kFree, "free", "free", "tab:green", AuthorsBodyRedraw::kAfterEveryMutatedGene, 0,
+       [](const Preset&) -> std::unique_ptr<Scaffold> { return std::make_unique<FreeScaffold>(); }},
+      {ScaffoldCase::kTime, "time", "time-constrained", "tab:orange", AuthorsBodyRedraw::kOnceAtTheEnd, 2,
+       [](const Preset&) -> std::unique_ptr<Scaffold> { return std::make_unique<TimeScaffold>(); }},
+      {ScaffoldCase::kPerformance, "performance", "performance-based", "tab:purple",
+       AuthorsBodyRedraw::kAfterEveryMutatedGene, 0, [](const Preset& preset) -> std::unique_ptr<Scaffold> {
+         return std::make_unique<PerformanceScaffold>(preset.performance_ceiling);
+       }},
+  };
+  return scaffolds;
 }
 
-ScaffoldCase ScaffoldCaseByName(const std::string& name) {
-  if (name == "free") return ScaffoldCase::kFree;
-  if (name == "time") return ScaffoldCase::kTime;
-  if (name == "performance") return ScaffoldCase::kPerformance;
-  throw std::invalid_argument("unknown case '" + name + "': allowed values are free, time, performance");
-}
+int ScaffoldSpec::number() const { return static_cast<int>(this - Scaffolds().data()) + 1; }
 
-std::unique_ptr<Scaffold> MakeScaffold(ScaffoldCase c, const Preset& preset) {
-  switch (c) {
-    case ScaffoldCase::kFree:
-      return std::make_unique<FreeScaffold>();
-    case ScaffoldCase::kTime:
-      return std::make_unique<TimeScaffold>();
-    case ScaffoldCase::kPerformance:
-      return std::make_unique<PerformanceScaffold>(preset.performance_ceiling);
+const ScaffoldSpec& ScaffoldSpecOf(ScaffoldCase c) {
+  for (const ScaffoldSpec& spec : Scaffolds()) {
+    if (spec.id == c) return spec;
   }
   throw std::invalid_argument("unknown scaffold case");
 }
+
+const char* ScaffoldCaseName(ScaffoldCase c) { return ScaffoldSpecOf(c).name; }
+
+std::vector<std::string> ScaffoldCaseNames() {
+  std::vector<std::string> names;
+  for (const ScaffoldSpec& spec : Scaffolds()) names.push_back(spec.name);
+  return names;
+}
+
+ScaffoldCase ScaffoldCaseByName(const std::string& name) {
+  std::string allowed;
+  for (const ScaffoldSpec& spec : Scaffolds()) {
+    if (name == spec.name) return spec.id;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(spec.name);
+  }
+  throw std::invalid_argument("unknown case '" + name + "': allowed values are " + allowed);
+}
+
+std::unique_ptr<Scaffold> MakeScaffold(ScaffoldCase c, const Preset& preset) { return ScaffoldSpecOf(c).make(preset); }
 
 }  // namespace walkers

@@ -1,20 +1,18 @@
 // The three scaffolds (paper §2.5, MODEL.md §5): each bounds the body-length
-// gene halfBodyX from above, by generation or by performance.
+// gene halfBodyX from above, by generation or by performance. Scaffolds() is
+// the one list of them: the command line, the run plan, the analysis and
+// (through summary.json) the figures read it.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "control/preset.h"
 
 namespace walkers {
 
 enum class ScaffoldCase { kFree, kTime, kPerformance };
-
-// "free", "time", "performance"
-const char* ScaffoldCaseName(ScaffoldCase c);
-// Throws std::invalid_argument naming the allowed values.
-ScaffoldCase ScaffoldCaseByName(const std::string& name);
 
 // What a scaffold may look at when it sets a generation's ceiling.
 struct ScaffoldInputs {
@@ -30,6 +28,35 @@ class Scaffold {
   // The ceiling of halfBodyX for the children of a generation [m].
   virtual double Ceiling(const ScaffoldInputs& in) const = 0;
 };
+
+// When the authors' program draws halfBodyX again under the scaffold's
+// ceiling (the `original` preset's body-gene mutation, MODEL.md §6): their
+// case-2 evolver does it once per child, the others after every gene that
+// mutated.
+enum class AuthorsBodyRedraw { kAfterEveryMutatedGene, kOnceAtTheEnd };
+
+// Everything the program knows of one scaffold.
+struct ScaffoldSpec {
+  ScaffoldCase id;
+  const char* name;    // on the command line and in files: "time"
+  const char* label;   // for people: "time-constrained"
+  const char* colour;  // its colour in the figures (a matplotlib colour name)
+  AuthorsBodyRedraw authors_body_redraw;
+  int paper_tripod_finals;  // of the paper's three runs of the case, those that ended as tripods (paper §3)
+  std::unique_ptr<Scaffold> (*make)(const Preset& preset);
+
+  int number() const;  // the paper's case number: 1, 2, 3
+};
+
+// The scaffolds in the paper's order: case 1, 2, 3.
+const std::vector<ScaffoldSpec>& Scaffolds();
+const ScaffoldSpec& ScaffoldSpecOf(ScaffoldCase c);
+
+// "free", "time", "performance"
+const char* ScaffoldCaseName(ScaffoldCase c);
+std::vector<std::string> ScaffoldCaseNames();
+// Throws std::invalid_argument naming the allowed values.
+ScaffoldCase ScaffoldCaseByName(const std::string& name);
 
 std::unique_ptr<Scaffold> MakeScaffold(ScaffoldCase c, const Preset& preset);
 

@@ -16,8 +16,8 @@ Genome Mutate(const Genome& parent, double body_ceiling, const MutationRules& ru
   auto redraw_body = [&](Genome* g) {
     (*g)[kHalfBodyX] = Saturate(body.floor, body_ceiling, rng->Normal((*g)[kHalfBodyX], body.sigma));
   };
-  const bool redraw_per_gene = rules.body_gene == BodyGeneMutation::kRedrawnPerMutation &&
-                               rules.scaffold_case != ScaffoldCase::kTime;
+  const bool authors = rules.body_gene == BodyGeneMutation::kRedrawnPerMutation;
+  const bool redraw_per_gene = authors && rules.body_redraw == AuthorsBodyRedraw::kAfterEveryMutatedGene;
 
   Genome child = parent;
   for (int k = 0; k < kNumGenes; ++k) {
@@ -30,9 +30,7 @@ Genome Mutate(const Genome& parent, double body_ceiling, const MutationRules& ru
     child.genes[k] = Saturate(spec.floor, ceiling, rng->Normal(child.genes[k], spec.sigma));
     if (redraw_per_gene) redraw_body(&child);
   }
-  if (rules.body_gene == BodyGeneMutation::kRedrawnPerMutation && rules.scaffold_case == ScaffoldCase::kTime) {
-    redraw_body(&child);
-  }
+  if (authors && rules.body_redraw == AuthorsBodyRedraw::kOnceAtTheEnd) redraw_body(&child);
   // a child never keeps a body longer than this generation allows
   child[kHalfBodyX] = Saturate(body.floor, body_ceiling, child[kHalfBodyX]);
   return child;

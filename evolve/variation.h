@@ -15,7 +15,8 @@ namespace walkers {
 struct MutationRules {
   double probability = 0.9;  // per evolved gene
   BodyGeneMutation body_gene = BodyGeneMutation::kRedrawnPerMutation;
-  ScaffoldCase scaffold_case = ScaffoldCase::kFree;
+  // under kRedrawnPerMutation: when halfBodyX is drawn again (the scaffold's property)
+  AuthorsBodyRedraw body_redraw = AuthorsBodyRedraw::kAfterEveryMutatedGene;
 };
 
 // The authors' clamp, ceiling first: x > ceiling gives the ceiling, else
@@ -29,7 +30,8 @@ double Saturate(double floor, double ceiling, double x);
 //   [floor, body_ceiling];
 // - kRedrawnPerMutation (authors): every gene mutates within its own bounds;
 //   in cases 1 and 3 halfBodyX is then drawn again, clamped to the body
-//   ceiling, after every gene that mutated; in case 2 once, at the end.
+//   ceiling, after every gene that mutated or once at the end, as the
+//   scaffold's authors_body_redraw says (case 2: once).
 // Either way the result is finally clamped (Saturate) to the body ceiling.
 Genome Mutate(const Genome& parent, double body_ceiling, const MutationRules& rules, Random* rng);
 

@@ -15,12 +15,20 @@ standard library, numpy, matplotlib, and scipy through scripts/claims.py.) Write
   fig9   mean best fitness per case with its bootstrap 95 % band; each replicate faintly
   finals final best fitness per case (points and box) and the share of runs whose
          final best is a tripod, with Wilson 95 % intervals (not in the paper)
+  learners  (a reproduction of two learners or more) final best fitness per learner
+         and case with the runs ending as tripods, and each learner's mean best
+         fitness per generation and case
 
 Inputs (formats as written by the `walkers` program):
-  RUN_DIR/summary.json              required
+  RUN_DIR/summary.json              required; its "scaffolds" list names the cases
+                                    (name, label, colour), in the paper's order
   RUN_DIR/<run dir>/generations.csv required for every run listed in summary.json
   RUN_DIR/walks.json                optional (fig4a, fig4b, fig6; picks fig7's run)
   RUN_DIR/gallery.json              optional (fig5)
+  summary.json's "learners" (name, label, colour, as "scaffolds") and "learner_runs"
+  ({learner, case, replicate, dir}; their generations.csv required): optional; with
+  two learners or more they give the learners figure. Figures 4-9 show "runs", the
+  first learner's.
 
 Absent data (documented choice):
   * A required file that is missing, or ANY input file that is present but malformed,
@@ -68,12 +76,8 @@ from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import claims  # noqa: E402  - the statistics: bootstrap bands, Wilson intervals
 
-CASES = ("free", "time", "performance")
-CASE_LABELS = {"free": "Case 1 free", "time": "Case 2 time-constrained",
-               "performance": "Case 3 performance-based"}
-CASE_COLOURS = {"free": "tab:green", "time": "tab:orange", "performance": "tab:purple"}
-# fig9's bands, told apart where they overlap
-CASE_HATCHES = {"free": "////", "time": "\\\\\\\\", "performance": "...."}
+# fig9's bands, told apart where they overlap (by the case's place in the list)
+HATCHES = ("////", "\\\\\\\\", "....", "xxxx", "++++", "oooo")
 GAIT_COLOURS = {"biped": "tab:blue", "tripod": "tab:red"}
 # a generation whose best fell has no gait class (every child fell)
 BEST_GAIT_COLOURS = {**GAIT_COLOURS, "none": "tab:gray"}
@@ -137,17 +141,38 @@ def field(obj, key, path, where, kind=None):
     return value
 
 
+def load_named_list(summary, key, path):
+    """summary[key]: a non-empty list of {name, label, colour} with distinct names (the
+    program's one list of scaffolds or learners), each given its place ("number", 1..)."""
+    items = field(summary, key, path, "", list)
+    if not items:
+        raise InputError(f"{path}: field '{key}' is empty")
+    out = []
+    for i, item in enumerate(items):
+        where = f"{key}[{i}]."
+        entry = {k: field(item, k, path, where, str) for k in ("name", "label", "colour")}
+        if not matplotlib.colors.is_color_like(entry["colour"]):
+            raise InputError(f"{path}: field '{where}colour' is '{entry['colour']}', not a colour")
+        if entry["name"] in [e["name"] for e in out]:
+            raise InputError(f"{path}: field '{where}name' repeats '{entry['name']}'")
+        out.append({**entry, "number": i + 1})
+    return out
+
+
 def load_summary(run_dir):
-    """summary.json -> list of runs {case, replicate, dir} and the replicate count."""
+    """summary.json -> its scaffolds, its runs {case, replicate, dir}, the replicate count
+    and the generations."""
     path = os.path.join(run_dir, "summary.json")
     summary = read_json(path, required=True)
+    scaffolds = load_named_list(summary, "scaffolds", path)
+    names = [s["name"] for s in scaffolds]
     runs = []
     for i, run in enumerate(field(summary, "runs", path, "", list)):
         where = f"runs[{i}]."
         case = field(run, "case", path, where, str)
-        if case not in CASES:
+        if case not in names:
             raise InputError(f"{path}: field '{where}case' is '{case}', "
-                             f"expected one of {', '.join(CASES)}")
+                             f"expected one of {', '.join(names)}")
         runs.append({"case": case, "replicate": field(run, "replicate", path, where, int),
                      "dir": field(run, "dir", path, where, str)})
     counts = {}
@@ -155,7 +180,29 @@ def load_summary(run_dir):
         counts[key] = summary.get(key, 0)
         if not isinstance(counts[key], int) or isinstance(counts[key], bool):
             raise InputError(f"{path}: field '{key}' has the wrong type")
-    return runs, max([counts["replicates"]] + [r["replicate"] for r in runs]), counts["generations"]
+    replicates = max([counts["replicates"]] + [r["replicate"] for r in runs])
+    return scaffolds, runs, replicates, counts["generations"]
+
+
+def load_learners(summary_path, summary, scaffolds):
+    """summary.json's learners and every learner's runs {learner, case, replicate, dir};
+    ([], []) when it names no learners."""
+    if "learners" not in summary:
+        return [], []
+    learners = load_named_list(summary, "learners", summary_path)
+    names = [l["name"] for l in learners]
+    cases = [s["name"] for s in scaffolds]
+    runs = []
+    for i, run in enumerate(field(summary, "learner_runs", summary_path, "", list)):
+        where = f"learner_runs[{i}]."
+        entry = {k: field(run, k, summary_path, where, str) for k in ("learner", "case", "dir")}
+        for key, allowed in (("learner", names), ("case", cases)):
+            if entry[key] not in allowed:
+                raise InputError(f"{summary_path}: field '{where}{key}' is '{entry[key]}', "
+                                 f"expected one of {', '.join(allowed)}")
+        entry["replicate"] = field(run, "replicate", summary_path, where, int)
+        runs.append(entry)
+    return learners, runs
 
 
 def load_generations(path):
@@ -277,13 +324,20 @@ def load_run_dir(run_dir):
     """Read and validate every input; raises InputError naming the bad file."""
     if not os.path.isdir(run_dir):
         raise InputError(f"{run_dir}: not a directory")
-    runs, replicates, generations = load_summary(run_dir)
+    scaffolds, runs, replicates, generations = load_summary(run_dir)
     for run in runs:
         run["data"] = load_generations(os.path.join(run_dir, run["dir"],
                                                     "generations.csv"))
+    summary_path = os.path.join(run_dir, "summary.json")
+    learners, learner_runs = load_learners(summary_path, read_json(summary_path, True), scaffolds)
+    if len(learners) > 1:
+        for run in learner_runs:
+            run["data"] = load_generations(os.path.join(run_dir, run["dir"], "generations.csv"))
     # the generation axes end where the summary's last "after N" column does
     longest = max([int(r["data"]["generation"][-1]) + 1 for r in runs] + [1])
-    return {"runs": runs, "replicates": replicates, "walks": load_walks(run_dir),
+    return {"scaffolds": scaffolds, "runs": runs, "replicates": replicates,
+            "learners": learners, "learner_runs": learner_runs,
+            "walks": load_walks(run_dir),
             "gallery": load_gallery(run_dir), "generations": generations or longest}
 
 
@@ -580,29 +634,29 @@ def fig7(runs, walks, out_dir):
     save(fig, out_dir, "fig7")
 
 
-def runs_by_case(runs):
-    """{case: [runs sorted by replicate]} for every case, possibly empty."""
-    return {c: sorted((r for r in runs if r["case"] == c), key=lambda r: r["replicate"])
-            for c in CASES}
+def runs_by_case(runs, scaffolds):
+    """[(scaffold, [its runs sorted by replicate])] for every case, possibly empty."""
+    return [(s, sorted((r for r in runs if r["case"] == s["name"]),
+                       key=lambda r: r["replicate"])) for s in scaffolds]
 
 
-def fig8(runs, replicates, generations, out_dir):
+def fig8(runs, scaffolds, replicates, generations, out_dir):
     """Grid (rows = cases, columns = replicates) of best fitness coloured by gait."""
-    grouped = runs_by_case(runs)
+    grouped = runs_by_case(runs, scaffolds)
     ncols = max(1, replicates)
     # beyond three replicates: narrow panels, so short titles, the case on each row's
     # label, the figure wider and the gait colours said in words above
     compact = ncols > 3
-    fig, axes = plt.subplots(len(CASES), ncols, sharex=True, sharey=True, squeeze=False,
+    fig, axes = plt.subplots(len(grouped), ncols, sharex=True, sharey=True, squeeze=False,
                              figsize=(max(DOUBLE, 0.8 + 0.75 * ncols) if compact else DOUBLE,
-                                      1.15 + 1.45 * len(CASES)),
+                                      1.15 + 1.45 * len(grouped)),
                              layout="constrained")
-    for row, case in enumerate(CASES):
-        by_rep = {r["replicate"]: r for r in grouped[case]}
+    for row, (scaffold, group) in enumerate(grouped):
+        by_rep = {r["replicate"]: r for r in group}
         for col in range(ncols):
             ax = axes[row, col]
             ax.set_title(f"rep. {col + 1}" if compact else
-                         f"Case {row + 1} ({case}), replicate {col + 1}")
+                         f"Case {scaffold['number']} ({scaffold['name']}), replicate {col + 1}")
             run = by_rep.get(col + 1)
             if run is None:
                 ax.text(0.5, 0.5, "no data", ha="center", va="center",
@@ -618,7 +672,7 @@ def fig8(runs, replicates, generations, out_dir):
             else:
                 ax.scatter(x, y, c=colours, s=6)
             ax.grid(alpha=0.3, lw=0.5)
-        axes[row, 0].set_ylabel(f"Case {row + 1} ({case})\nbest fitness" if compact
+        axes[row, 0].set_ylabel(f"Case {scaffold['number']} ({scaffold['name']})\nbest fitness" if compact
                                 else "best fitness\n(leg lengths)")
     for ax in axes[-1]:
         ax.set_xlabel("generation")
@@ -649,19 +703,24 @@ def case_curves(case, runs):
                                                         for r in runs])
 
 
-def fig9(runs, generations, out_dir):
+def case_label(scaffold):
+    """'Case 2 time-constrained'"""
+    return f"Case {scaffold['number']} {scaffold['label']}"
+
+
+def fig9(runs, scaffolds, generations, out_dir):
     """Mean best fitness per generation and case, its bootstrap 95 % band, and each
     replicate's curve faintly."""
     fig, ax = plt.subplots(figsize=(SINGLE, 3.1), layout="constrained")
-    for case, group in runs_by_case(runs).items():
-        colour = CASE_COLOURS[case]
+    for index, (scaffold, group) in enumerate(runs_by_case(runs, scaffolds)):
+        colour = scaffold["colour"]
         if not group:
-            ax.plot([], [], color=colour, label=f"{CASE_LABELS[case]} (no data)")
+            ax.plot([], [], color=colour, label=f"{case_label(scaffold)} (no data)")
             continue
-        g, y = case_curves(case, group)
+        g, y = case_curves(scaffold["name"], group)
         for curve in y:
             ax.plot(g, curve, color=colour, lw=0.4, alpha=0.35)
-        ax.plot(g, y.mean(axis=0), color=colour, label=f"{CASE_LABELS[case]} (n = {len(group)})")
+        ax.plot(g, y.mean(axis=0), color=colour, label=f"{case_label(scaffold)} (n = {len(group)})")
         at = np.unique(np.linspace(0, len(g) - 1, min(len(g), BAND_POINTS)).round().astype(int))
         band = claims.mean_band(y[:, at])
         if band is not None:
@@ -669,7 +728,7 @@ def fig9(runs, generations, out_dir):
             ax.fill_between(g[at], band[0], band[1], lw=0.6, ls="--",
                             facecolor=matplotlib.colors.to_rgba(colour, 0.15),
                             edgecolor=matplotlib.colors.to_rgba(colour, 0.8),
-                            hatch=CASE_HATCHES[case])
+                            hatch=HATCHES[index % len(HATCHES)])
     ax.set_xlabel("generation")
     ax.set_ylabel("best fitness (leg lengths)")
     ax.set_xlim(0, generations)
@@ -679,16 +738,16 @@ def fig9(runs, generations, out_dir):
     save(fig, out_dir, "fig9")
 
 
-def finals(runs, out_dir):
+def finals(runs, scaffolds, out_dir):
     """Left: each run's final best fitness per case, points over a box. Right: the
     share of each case's runs whose final best is a tripod, Wilson 95 % interval."""
     fig, (left, right) = plt.subplots(1, 2, figsize=(DOUBLE, 2.8), layout="constrained",
                                       gridspec_kw={"width_ratios": (3, 2)})
-    grouped = runs_by_case(runs)
-    names = ["{} {}\n{}".format(*CASE_LABELS[c].split(" ", 2)) for c in grouped]
+    grouped = runs_by_case(runs, scaffolds)
+    names = [f"Case {s['number']}\n{s['label']}" for s, _ in grouped]
     spread = np.random.default_rng(claims.SEED)       # the points' sideways jitter
-    for x, (case, group) in enumerate(grouped.items()):
-        colour = CASE_COLOURS[case]
+    for x, (scaffold, group) in enumerate(grouped):
+        colour = scaffold["colour"]
         if not group:
             left.text(x, 0.5, "no data", ha="center", va="center", color="0.4",
                       transform=left.get_xaxis_transform())
@@ -728,6 +787,61 @@ def finals(runs, out_dir):
     right.set_ylim(0, 1.15)
     right.set_title("share, Wilson 95 % interval", loc="left")
     save(fig, out_dir, "finals")
+
+
+def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
+    """Final best fitness per learner and case (bars: mean over replicates; dots: each
+    replicate; above each bar its runs ending as tripods), and below, one panel per
+    learner, the mean best fitness per generation of each case."""
+    n = len(learners)
+    fig = plt.figure(figsize=(DOUBLE, 5.2), layout="constrained")
+    grid = fig.add_gridspec(2, n, height_ratios=(1.2, 1.0))
+    bars = fig.add_subplot(grid[0, :])
+    width = 0.8 / max(1, len(scaffolds))
+    top = 1.0
+    for i, learner in enumerate(learners):
+        for j, scaffold in enumerate(scaffolds):
+            group = [r for r in learner_runs
+                     if r["learner"] == learner["name"] and r["case"] == scaffold["name"]]
+            x = i - 0.4 + width * (j + 0.5)
+            if not group:
+                bars.text(x, 0.2, "no data", rotation=90, ha="center", va="bottom",
+                          fontsize=6, color="0.4")
+                continue
+            finals = np.array([float(r["data"]["best_fitness"][-1]) for r in group])
+            tripods = sum(r["data"]["best_gait"][-1] == "tripod" for r in group)
+            bars.bar(x, finals.mean(), width * 0.9, color=scaffold["colour"], alpha=0.75,
+                     label=case_label(scaffold) if i == 0 else None)
+            bars.scatter(np.full(len(finals), x), finals, s=6, color="black", zorder=3)
+            bars.text(x, max(finals.max(), finals.mean()) + 0.3, f"{tripods}/{len(group)}",
+                      ha="center", va="bottom", fontsize=6)
+            top = max(top, float(finals.max()))
+    bars.set_xticks(range(n), [f"{l['label']}\n({l['name']})" for l in learners])
+    bars.set_ylabel("final best fitness\n(leg lengths)")
+    bars.set_ylim(0, 1.2 * top)
+    bars.grid(axis="y", alpha=0.3, lw=0.5)
+    legend_above(bars, ncol=len(scaffolds),
+                 title="final best: bars the mean, dots the replicates, "
+                       "figures above: runs ending as tripods")
+    panels = []
+    for i, learner in enumerate(learners):
+        ax = fig.add_subplot(grid[1, i], sharey=panels[0] if panels else None)
+        panels.append(ax)
+        for scaffold in scaffolds:
+            group = [r for r in learner_runs
+                     if r["learner"] == learner["name"] and r["case"] == scaffold["name"]]
+            if group:
+                g, y = case_curves(f"{learner['name']} {scaffold['name']}", group)
+                ax.plot(g, y.mean(axis=0), color=scaffold["colour"])
+        ax.set_title(learner["label"])
+        ax.set_xlim(0, generations)
+        ax.set_xlabel("generation")
+        ax.grid(alpha=0.3, lw=0.5)
+        if i == 0:
+            ax.set_ylabel("mean best fitness")
+    # one scale for every learner's panel, from 0 to the highest mean best
+    panels[0].set_ylim(0, 1.05 * top)
+    save(fig, out_dir, "learners")
 
 
 # ----------------------------------------------------------------------------- main
@@ -774,14 +888,18 @@ def draw_all(inputs, out_dir):
     if not runs:
         warn("summary.json lists no runs: skipping fig7, fig8, fig9, finals")
         return
-    for case, group in runs_by_case(runs).items():
+    scaffolds = inputs["scaffolds"]
+    for scaffold, group in runs_by_case(runs, scaffolds):
         if not group:
-            warn(f"summary.json: no runs for case '{case}': fig8, fig9 and finals say "
-                 "'no data'")
+            warn(f"summary.json: no runs for case '{scaffold['name']}': fig8, fig9 and finals "
+                 "say 'no data'")
     drawn("fig7", fig7, runs, walks, out_dir)
-    drawn("fig8", fig8, runs, inputs["replicates"], inputs["generations"], out_dir)
-    drawn("fig9", fig9, runs, inputs["generations"], out_dir)
-    drawn("finals", finals, runs, out_dir)
+    drawn("fig8", fig8, runs, scaffolds, inputs["replicates"], inputs["generations"], out_dir)
+    drawn("fig9", fig9, runs, scaffolds, inputs["generations"], out_dir)
+    drawn("finals", finals, runs, scaffolds, out_dir)
+    if len(inputs["learners"]) > 1:
+        drawn("learners", learners_figure, inputs["learners"], inputs["learner_runs"],
+              scaffolds, inputs["generations"], out_dir)
 
 
 def main(argv=None):

@@ -9,7 +9,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libsundials-dev libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libeigen3-dev libsundials-dev libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libpagmo-dev
   python3 python3-matplotlib python3-scipy
 )
 case "${1:-}" in

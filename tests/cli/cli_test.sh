@@ -7,6 +7,7 @@ src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # expect CODE PATTERN -- ARGS...: exit code CODE (or "nonzero") and output matching PATTERN
 expect() {
@@ -58,31 +59,59 @@ expect nonzero 'ensemble: value 0 is outside the allowed range \[1, 1000\]' -- e
 common=(--case performance --population 8 --archive 8 --mutation-children 5 --seed 3 --threads 2)
 small=("${common[@]}" --generations 6)
 expect 0 'best fitness' -- evolve "${small[@]}" --out "$tmp/whole"
-"$walkers" evolve "${small[@]}" --out "$tmp/killed" >/dev/null 2>&1 &
-pid=$!
-sleep 0.$((RANDOM % 9 + 1))
-kill -9 $pid 2>/dev/null
-wait $pid 2>/dev/null
-for attempt in 1 2 3 4 5 6 7 8 9 10; do
-  [ -f "$tmp/killed/best.json" ] && break
-  if [ -f "$tmp/killed/config.json" ]; then mode=--resume; else mode=--force; fi
-  "$walkers" evolve "${small[@]}" --out "$tmp/killed" $mode >/dev/null 2>&1 &
+# evolve_killed DIR ARGS...: the run killed (SIGKILL) at random moments and
+# resumed each time until it finishes
+evolve_killed() {
+  local dir=$1 mode pid
+  shift
+  "$walkers" evolve "$@" --out "$dir" >/dev/null 2>&1 &
   pid=$!
   sleep 0.$((RANDOM % 9 + 1))
   kill -9 $pid 2>/dev/null
   wait $pid 2>/dev/null
-done
-[ -f "$tmp/killed/best.json" ] || "$walkers" evolve "${small[@]}" --out "$tmp/killed" --resume >/dev/null 2>&1
-for f in evaluations.csv generations.csv; do
-  if ! cmp -s <(sed 's/,[^,]*$//' "$tmp/whole/$f") <(sed 's/,[^,]*$//' "$tmp/killed/$f"); then
-    echo "FAIL: killed and resumed run differs in $f"; failures=$((failures + 1))
-  fi
-done
-for f in archive.json best.json config.json; do
-  cmp -s "$tmp/whole/$f" "$tmp/killed/$f" || { echo "FAIL: killed and resumed run differs in $f"; failures=$((failures + 1)); }
-done
+  for attempt in 1 2 3 4 5 6 7 8 9 10; do
+    [ -f "$dir/best.json" ] && break
+    if [ -f "$dir/config.json" ]; then mode=--resume; else mode=--force; fi
+    "$walkers" evolve "$@" --out "$dir" $mode >/dev/null 2>&1 &
+    pid=$!
+    sleep 0.$((RANDOM % 9 + 1))
+    kill -9 $pid 2>/dev/null
+    wait $pid 2>/dev/null
+  done
+  [ -f "$dir/best.json" ] || "$walkers" evolve "$@" --out "$dir" --resume >/dev/null 2>&1
+}
+# expect_same_run A B: the same files but for the wall-clock columns
+expect_same_run() {
+  local f
+  for f in evaluations.csv generations.csv; do
+    if ! cmp -s <(sed 's/,[^,]*$//' "$1/$f") <(sed 's/,[^,]*$//' "$2/$f"); then
+      echo "FAIL: $2 differs from $1 in $f"; failures=$((failures + 1))
+    fi
+  done
+  for f in archive.json best.json config.json; do
+    cmp -s "$1/$f" "$2/$f" || { echo "FAIL: $2 differs from $1 in $f"; failures=$((failures + 1)); }
+  done
+}
+evolve_killed "$tmp/killed" "${small[@]}"
+expect_same_run "$tmp/whole" "$tmp/killed"
 echo "ok: SIGKILLed run resumed to the same files"
 expect 0 '^fitness' -- evaluate --genome "$tmp/whole/best.json"
+# every other learner: on one thread uninterrupted, and on two killed and
+# resumed, the same files
+for learner in cmaes sade pso; do
+  run=(--case time --learner $learner --population 8 --archive 8 --mutation-children 5 --seed 4 --generations 4)
+  expect 0 'best fitness' -- evolve "${run[@]}" --threads 1 --out "$tmp/$learner-whole"
+  grep -q "\"learner\": \"$learner\"" "$tmp/$learner-whole/config.json" || fail "config.json does not name $learner"
+  evolve_killed "$tmp/$learner-killed" "${run[@]}" --threads 2
+  expect_same_run "$tmp/$learner-whole" "$tmp/$learner-killed"
+  echo "ok: $learner: SIGKILLed run on two threads resumed to the one-thread run's files"
+done
+expect nonzero "--learner: nsga2 not in \{ga,cmaes,sade,pso\}" -- evolve --case free --learner nsga2 --out "$tmp/x"
+expect nonzero 'population = 6 is outside its allowed range \[7, 100000\] for the learner sade' -- \
+  evolve --case free --learner sade --population 6 --mutation-children 3 --out "$tmp/x"
+expect nonzero "learners: 'cmaes' is given twice" -- reproduce --learners cmaes,ga,cmaes --out "$tmp/x"
+[ ! -e "$tmp/x" ] || fail "a refused command created its --out folder"
+
 
 # bad input: a clear message and a non-zero exit
 sed 's/"kStep": [0-9.]*/"kStep": 900/' "$genome" >"$tmp/bad.json"
@@ -103,7 +132,6 @@ expect nonzero 'seed = 3 but 4' -- evolve --case performance --generations 6 --p
 expect nonzero 'simulate|Usage|subcommand' --
 
 # nothing lost, ever
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # same_run A B: the same files but for the wall-clock columns
 same_run() {
   for f in evaluations.csv generations.csv; do

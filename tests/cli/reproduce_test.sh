@@ -122,6 +122,19 @@ WALKERS_PYTHON=$python "$walkers" reproduce --generations 2 --replicates 1 --thr
 "$python" -c "import json, sys; assert json.load(open(sys.argv[1]))['generations'] == 2" "$tmp/rep/summary.json" ||
   fail "reproduce --force did not replace the summary"
 
+# learners compared: every learner under every scaffold, the table and the figure
+WALKERS_PYTHON=$python "$walkers" reproduce --learners ga,cmaes --generations 2 --replicates 1 --threads 2 \
+  --out "$tmp/learners" >"$tmp/learners.txt" 2>&1 || { cat "$tmp/learners.txt"; fail "reproduce --learners failed"; }
+grep -q '^6 runs,' "$tmp/learners.txt" || { cat "$tmp/learners.txt"; fail "reproduce --learners ga,cmaes did not make 6 runs"; }
+for run in free-1 time-1 performance-1 cmaes-free-1 cmaes-time-1 cmaes-performance-1; do
+  [ -s "$tmp/learners/$run/best.json" ] || fail "no $run/best.json"
+done
+grep -q '^| CMA-ES (cmaes) |' "$tmp/learners/summary.md" || fail "summary.md has no row for CMA-ES"
+for ext in png svg; do
+  [ -s "$tmp/learners/figures/learners.$ext" ] || fail "no figures/learners.$ext"
+done
+[ ! -e "$tmp/rep/figures/learners.png" ] || fail "a reproduction of one learner drew the learners figure"
+
 # replay: the animation in a real browser, the filmstrip as XML
 genome=$src/data/genomes/default.json
 "$walkers" replay --genome "$genome" --out "$tmp/walk.html" >/dev/null || fail "replay to HTML"

@@ -15,39 +15,10 @@ Individual WithFitness(int generation, int child, double fitness) {
   return ind;
 }
 
-TEST(ArchiveTest, KeepsTheBestSixteenOverAllGenerations) {
-  Archive archive(16);
-  std::vector<double> all;
-  for (int g = 0; g < 5; ++g) {
-    std::vector<Individual> children;
-    for (int c = 0; c < 16; ++c) {
-      const double f = std::sin(7.0 * g + 3.0 * c) * 10.0;  // scattered over generations
-      children.push_back(WithFitness(g, c, f));
-      all.push_back(f);
-    }
-    archive.Merge(children);
-  }
-  std::sort(all.rbegin(), all.rend());
-  ASSERT_EQ(archive.members().size(), 16u);
-  for (int i = 0; i < 16; ++i) EXPECT_DOUBLE_EQ(archive.members()[i].fitness(), all[i]) << i;
-  EXPECT_DOUBLE_EQ(archive.AverageOfBest(3), (all[0] + all[1] + all[2]) / 3.0);
-  std::set<int> generations;
-  for (const Individual& m : archive.members()) generations.insert(m.generation);
-  EXPECT_GT(generations.size(), 1u) << "the best come from several generations";
-}
-
-TEST(ArchiveTest, EqualFitnessKeepsTheOlderIndividual) {
-  Archive archive(2);
-  archive.Merge({WithFitness(0, 0, 5.0), WithFitness(0, 1, 1.0)});
-  archive.Merge({WithFitness(1, 0, 5.0), WithFitness(1, 1, 5.0)});
-  EXPECT_EQ(archive.members()[0].id(), "0/0");
-  EXPECT_EQ(archive.members()[1].id(), "1/0");
-}
-
 class BreedTest : public ::testing::Test {
  protected:
   GeneticAlgorithmConfig config_;
-  MutationRules rules_{0.9, BodyGeneMutation::kLikeEveryGene, ScaffoldCase::kFree};
+  MutationRules rules_{0.9, BodyGeneMutation::kLikeEveryGene, AuthorsBodyRedraw::kAfterEveryMutatedGene};
 
   Archive FullArchive() {
     Archive archive(16);

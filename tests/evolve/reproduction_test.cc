@@ -125,5 +125,45 @@ TEST_F(ReproductionTest, SummaryListsEachRunsBestBipedAndBestTripod) {
   EXPECT_GT(found, 0);  // not all null
 }
 
+TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheOthers) {
+  ReproductionConfig c = Tiny();
+  c.learners = {"ga", "pso"};
+  c.generations = 2;
+  std::vector<std::string> names;
+  for (const PlannedRun& run : PlanRuns(c)) names.push_back(run.name + ":" + run.config.learner);
+  EXPECT_EQ(names, (std::vector<std::string>{"free-1:ga", "time-1:ga", "performance-1:ga", "pso-free-1:pso",
+                                             "pso-time-1:pso", "pso-performance-1:pso"}));
+  const ReproductionSummary returned = Reproduction(c, Dir("r"), StartMode::kNew).Run(2);
+  EXPECT_EQ(returned.evaluations, 6 * 2 * 2) << "every learner's evaluations";
+  const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
+  EXPECT_EQ(summary.at("runs").size(), 3u) << "the paper's statistics are the first learner's";
+  EXPECT_EQ(summary.at("evaluations"), 3 * 2 * 2);
+  EXPECT_EQ(summary.at("learner_runs").size(), 6u);
+  EXPECT_EQ(summary.at("learners").size(), 2u);
+  EXPECT_EQ(summary.at("learners")[1].at("name"), "pso");
+  const nlohmann::json& pso = summary.at("learner_comparison").at("pso").at("cases");
+  for (const char* scaffold : {"free", "time", "performance"}) {
+    const nlohmann::json run = nlohmann::json::parse(ReadFile(Dir("r") + "/pso-" + scaffold + "-1/archive.json"));
+    EXPECT_EQ(run.at("learner"), "pso");
+    EXPECT_EQ(pso.at(scaffold).at("final_best_mean"), run.at("archive")[0].at("fitness")) << scaffold;
+    EXPECT_EQ(pso.at(scaffold).at("runs"), 1);
+  }
+  const std::string md = ReadFile(ReproductionFiles(Dir("r")).summary_md);
+  EXPECT_NE(md.find("## Learners under the scaffolds"), std::string::npos) << md;
+  EXPECT_NE(md.find("| particle swarm (pso) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| genetic algorithm (ga) |"), std::string::npos) << md;
+  // another learner's run folder is a reproduction's too
+  fs::remove_all(Dir("r2"));
+  fs::create_directories(Dir("r2") + "/cmaes-time-3");
+  EXPECT_NE(Error([&] { Reproduction(Tiny(), Dir("r2"), StartMode::kNew); }).find("holds a reproduction already"),
+            std::string::npos);
+  c.learners = {"pso", "pso"};
+  EXPECT_EQ(Error([&] { c.Validate(); }), "learners: 'pso' is given twice");
+  c.learners = {};
+  EXPECT_EQ(Error([&] { c.Validate(); }), "learners: at least one learner is needed");
+  c.learners = {"sade"};  // sade needs 7 children
+  EXPECT_EQ(Error([&] { c.Validate(); }), "population = 2 is outside its allowed range [7, 100000] for the learner sade");
+}
+
 }  // namespace
 }  // namespace walkers

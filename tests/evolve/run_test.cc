@@ -421,6 +421,102 @@ TEST_F(RunTest, ResumingWithOtherSettingsIsRefused) {
   EXPECT_FALSE(fs::exists(Dir("nothing-here")));
 }
 
+// The run with each learner beside the GA: the same files on any number of
+// threads and after a resume, its learner named in its files.
+class LearnerRunTest : public RunTest, public ::testing::WithParamInterface<std::string> {
+ protected:
+  RunConfig LearnerRun(int generations = 4) const {
+    RunConfig config = SmallRun(ScaffoldCase::kPerformance, generations);
+    config.learner = GetParam();
+    return config;
+  }
+};
+
+std::vector<std::string> LearnersBesideTheGa() {
+  std::vector<std::string> names = LearnerNames();
+  names.erase(names.begin());
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Learners, LearnerRunTest, ::testing::ValuesIn(LearnersBesideTheGa()),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
+
+TEST_P(LearnerRunTest, SameSeedGivesIdenticalFilesWithOneAndTwoThreads) {
+  EvolutionRun(LearnerRun(), Dir("one"), StartMode::kNew, 1).Run();
+  EvolutionRun(LearnerRun(), Dir("two"), StartMode::kNew, 2).Run();
+  ExpectSameRun(Dir("one"), Dir("two"));
+  // the learner's children, not the GA's, from generation 1 on
+  RunConfig ga = LearnerRun();
+  ga.learner = "ga";
+  EvolutionRun(ga, Dir("ga"), StartMode::kNew, 2).Run();
+  EXPECT_NE(WithoutTimingColumn(RunFiles(Dir("one")).evaluations), WithoutTimingColumn(RunFiles(Dir("ga")).evaluations));
+  std::istringstream rows(ReadFile(RunFiles(Dir("one")).evaluations));
+  std::string line;
+  int by_learner = 0;
+  while (std::getline(rows, line)) by_learner += line.rfind("3,", 0) == 0 && line.find("," + GetParam()) != std::string::npos;
+  EXPECT_EQ(by_learner, 8) << "generation 3's children name the learner";
+  // the files say which learner it was
+  const RunConfig again = RunConfigFromJson(nlohmann::json::parse(ReadFile(RunFiles(Dir("one")).config)), "config.json");
+  EXPECT_EQ(again.learner, GetParam());
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(RunFiles(Dir("one")).archive)).at("learner"), GetParam());
+}
+
+TEST_P(LearnerRunTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
+  EvolutionRun(LearnerRun(5), Dir("whole"), StartMode::kNew, 2).Run();
+  // killed after generation 2's checkpoint, while generation 3's rows were written
+  struct Killed {};
+  try {
+    EvolutionRun run(LearnerRun(5), Dir("killed"), StartMode::kNew, 2);
+    run.Run([](const GenerationSummary& s) {
+      if (s.generation == 2) throw Killed{};
+    });
+  } catch (const Killed&) {
+  }
+  AppendDurably(RunFiles(Dir("killed")).evaluations, "3,0,cmaes,0.5,0.1");
+  const nlohmann::json checkpoint = nlohmann::json::parse(ReadFile(RunFiles(Dir("killed")).checkpoint));
+  EXPECT_TRUE(checkpoint.contains("learner")) << "the learner's state is in the checkpoint";
+  EvolutionRun resumed(LearnerRun(5), Dir("killed"), StartMode::kResume, 1);
+  EXPECT_EQ(resumed.completed_generations(), 3);
+  resumed.Run();
+  ExpectSameRun(Dir("whole"), Dir("killed"));
+}
+
+TEST_P(LearnerRunTest, ResumingWithAnotherLearnerIsRefused) {
+  EvolutionRun(LearnerRun(1), Dir("a"), StartMode::kNew, 2).Run();
+  RunConfig ga = LearnerRun(2);
+  ga.learner = "ga";
+  try {
+    EvolutionRun(ga, Dir("a"), StartMode::kResume, 2);
+    FAIL() << "resumed a " << GetParam() << " run with the GA";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("learner"), std::string::npos) << e.what();
+  }
+}
+
+TEST_P(LearnerRunTest, ADamagedLearnerStateIsRefusedNamingTheField) {
+  EvolutionRun(LearnerRun(2), Dir("a"), StartMode::kNew, 2).Run();
+  const std::string path = RunFiles(Dir("a")).checkpoint;
+  nlohmann::json checkpoint = nlohmann::json::parse(ReadFile(path));
+  checkpoint["learner"]["unexpected"] = 1;
+  std::ofstream(path) << checkpoint.dump();
+  try {
+    EvolutionRun(LearnerRun(3), Dir("a"), StartMode::kResume, 2);
+    FAIL() << "resumed with a damaged learner state";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("learner.unexpected"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(RunTest, TheGasRunsDoNotNameTheirLearner) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  EXPECT_FALSE(nlohmann::json::parse(ReadFile(RunFiles(Dir("a")).config)).contains("learner"));
+  EXPECT_FALSE(nlohmann::json::parse(ReadFile(RunFiles(Dir("a")).checkpoint)).contains("learner"));
+  RunConfig cmaes = SmallRun(ScaffoldCase::kFree, 2);
+  cmaes.learner = "cmaes";
+  EXPECT_THROW(EvolutionRun(cmaes, Dir("a"), StartMode::kResume, 2), std::runtime_error);
+}
+
 TEST_F(RunTest, AnUnwritableDirectoryIsAClearError) {
   std::ofstream(Dir("file")) << "x";
   try {

@@ -60,7 +60,31 @@ TEST(ScaffoldTest, PerformanceBasedWaitsForProgressToMeasure) {
 TEST(ScaffoldTest, CasesByName) {
   EXPECT_EQ(ScaffoldCaseByName("time"), ScaffoldCase::kTime);
   EXPECT_STREQ(ScaffoldCaseName(ScaffoldCase::kPerformance), "performance");
-  EXPECT_THROW(ScaffoldCaseByName("scaffolded"), std::invalid_argument);
+  try {
+    ScaffoldCaseByName("scaffolded");
+    FAIL() << "accepted an unknown case";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "unknown case 'scaffolded': allowed values are free, time, performance");
+  }
+}
+
+TEST(ScaffoldTest, TheListHoldsEachScaffoldOnceInThePapersOrder) {
+  const std::vector<ScaffoldSpec>& list = Scaffolds();
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(ScaffoldCaseNames(), (std::vector<std::string>{"free", "time", "performance"}));
+  for (const ScaffoldSpec& spec : list) {
+    EXPECT_EQ(&ScaffoldSpecOf(spec.id), &spec);
+    EXPECT_EQ(MakeScaffold(spec.id, OriginalPreset())->id(), spec.id) << spec.name;
+    EXPECT_EQ(spec.number(), static_cast<int>(&spec - list.data()) + 1);
+  }
+  EXPECT_STREQ(list[1].label, "time-constrained");
+  // the authors' case-2 evolver draws halfBodyX again once per child, the others after every mutated gene
+  EXPECT_EQ(list[1].authors_body_redraw, AuthorsBodyRedraw::kOnceAtTheEnd);
+  EXPECT_EQ(list[0].authors_body_redraw, AuthorsBodyRedraw::kAfterEveryMutatedGene);
+  EXPECT_EQ(list[2].authors_body_redraw, AuthorsBodyRedraw::kAfterEveryMutatedGene);
+  // the paper's runs: two of case 2's three ended as tripods
+  EXPECT_EQ(list[1].paper_tripod_finals, 2);
+  EXPECT_EQ(list[0].paper_tripod_finals + list[2].paper_tripod_finals, 0);
 }
 
 }  // namespace

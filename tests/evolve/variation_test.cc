@@ -19,7 +19,7 @@ class MutationTest : public ::testing::TestWithParam<Variant> {
   MutationRules Rules() const {
     MutationRules r;
     r.body_gene = GetParam().preset.body_gene_mutation;
-    r.scaffold_case = GetParam().scaffold_case;
+    r.body_redraw = ScaffoldSpecOf(GetParam().scaffold_case).authors_body_redraw;
     return r;
   }
 };
@@ -87,9 +87,12 @@ BodyStep MeasureBodyStep(const MutationRules& rules) {
 
 TEST(BodyGeneTest, PresetsTreatTheBodyGeneAsMODELSectionSixSays) {
   const double sigma = GeneTable()[kHalfBodyX].sigma;
-  const BodyStep paper = MeasureBodyStep({0.9, BodyGeneMutation::kLikeEveryGene, ScaffoldCase::kFree});
-  const BodyStep authors_free = MeasureBodyStep({0.9, BodyGeneMutation::kRedrawnPerMutation, ScaffoldCase::kFree});
-  const BodyStep authors_time = MeasureBodyStep({0.9, BodyGeneMutation::kRedrawnPerMutation, ScaffoldCase::kTime});
+  const auto rules = [](BodyGeneMutation body_gene, ScaffoldCase c) {
+    return MutationRules{0.9, body_gene, ScaffoldSpecOf(c).authors_body_redraw};
+  };
+  const BodyStep paper = MeasureBodyStep(rules(BodyGeneMutation::kLikeEveryGene, ScaffoldCase::kFree));
+  const BodyStep authors_free = MeasureBodyStep(rules(BodyGeneMutation::kRedrawnPerMutation, ScaffoldCase::kFree));
+  const BodyStep authors_time = MeasureBodyStep(rules(BodyGeneMutation::kRedrawnPerMutation, ScaffoldCase::kTime));
   // paper: one draw with probability 0.9, clamped to [0.05, 0.9]
   EXPECT_LT(paper.rms, sigma);
   EXPECT_GT(paper.rms, 0.6 * sigma);
@@ -108,7 +111,7 @@ TEST(BodyGeneTest, AuthorsClampCeilingFirstBelowTheFloor) {
   EXPECT_DOUBLE_EQ(Saturate(0.05, 0.03, 0.01), 0.05);
   EXPECT_DOUBLE_EQ(Saturate(0.05, 0.9, 0.3), 0.3);
   Random rng(1, 2, 3);
-  const MutationRules rules{0.9, BodyGeneMutation::kRedrawnPerMutation, ScaffoldCase::kPerformance};
+  const MutationRules rules{0.9, BodyGeneMutation::kRedrawnPerMutation, AuthorsBodyRedraw::kAfterEveryMutatedGene};
   bool saw_ceiling = false;
   for (int i = 0; i < 100; ++i) {
     const double x = Mutate(DefaultGenome(), 0.03, rules, &rng)[kHalfBodyX];

@@ -29,7 +29,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 SCRIPT = os.path.join(ROOT, "scripts", "figures.py")
 ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals")
 WALK_FIGS = ("fig4a", "fig4b", "fig6")
-CASES = ("free", "time", "performance")
+# summary.json's list of scaffolds, as the program writes it (evolve/scaffold.cc)
+SCAFFOLDS = [{"name": "free", "label": "free", "colour": "tab:green"},
+             {"name": "time", "label": "time-constrained", "colour": "tab:orange"},
+             {"name": "performance", "label": "performance-based", "colour": "tab:purple"}]
+CASES = tuple(s["name"] for s in SCAFFOLDS)
 REPLICATES, GENERATIONS, FRAMES = 2, 60, 451
 
 
@@ -146,7 +150,7 @@ def make_run_dir(root):
             runs.append({"case": case, "replicate": rep, "dir": name})
     write_json(os.path.join(run_dir, "summary.json"),
                {"preset": "original", "generations": GENERATIONS,
-                "replicates": REPLICATES, "runs": runs})
+                "replicates": REPLICATES, "scaffolds": SCAFFOLDS, "runs": runs})
     write_json(os.path.join(run_dir, "walks.json"), {
         "biped": walk("biped", "performance-2", 1.0, body(0.04, 0.45, 0.75, 0.08), 12.3),
         "tripod": walk("tripod", "time-1", 0.7, body(0.85, 0.5, 0.6, 0.25), 8.9)})
@@ -283,6 +287,61 @@ class FiguresTest(unittest.TestCase):
             self.assert_absent(name)
         for name in ("fig5", "fig7", "fig8", "fig9"):
             self.assert_figure(name)
+
+    def test_the_cases_are_the_summarys_list_of_scaffolds(self):
+        # a fourth scaffold, named only in summary.json, gets its row and its line
+        def add_case(summary):
+            summary["scaffolds"].append({"name": "steps", "label": "stepwise",
+                                         "colour": "tab:cyan"})
+            summary["runs"].append({"case": "steps", "replicate": 1, "dir": "free-1"})
+        edit_json(os.path.join(self.run_dir, "summary.json"), add_case)
+        self.run_script()
+        self.assertIn("Case 4 (steps), replicate 1", self.svg_text("fig8"))
+        self.assertIn("Case 4 stepwise (n = 1)", self.svg_text("fig9"))
+
+    def test_a_summary_without_its_scaffolds_is_an_error(self):
+        for change, message in ((lambda s: s.pop("scaffolds"), "missing field 'scaffolds'"),
+                                (lambda s: s["scaffolds"][1].update(colour="orangeish"),
+                                 "'scaffolds[1].colour' is 'orangeish', not a colour"),
+                                (lambda s: s["scaffolds"][2].update(name="free"),
+                                 "'scaffolds[2].name' repeats 'free'"),
+                                (lambda s: s["runs"][0].update(case="steps"),
+                                 "'runs[0].case' is 'steps', expected one of free, time, "
+                                 "performance")):
+            make = os.path.join(self.tmp.name, "again")
+            os.makedirs(make, exist_ok=True)
+            self.run_dir = make_run_dir(tempfile.mkdtemp(dir=make))
+            self.fig_dir = os.path.join(self.run_dir, "figures")
+            edit_json(os.path.join(self.run_dir, "summary.json"), change)
+            stderr = self.run_script(expect_rc=1)
+            self.assertIn(message, stderr)
+
+    def add_learners(self, summary):
+        """A second learner beside the GA, whose runs reuse the GA's run folders."""
+        summary["learners"] = [{"name": "ga", "label": "genetic algorithm", "colour": "tab:blue"},
+                               {"name": "cmaes", "label": "CMA-ES", "colour": "tab:red"}]
+        summary["learner_runs"] = [dict(r, learner=name) for name in ("ga", "cmaes")
+                                   for r in summary["runs"]]
+
+    def test_two_learners_give_the_learners_figure(self):
+        self.assert_absent("learners")
+        self.run_script()
+        self.assert_absent("learners")          # one learner: nothing to compare
+        edit_json(os.path.join(self.run_dir, "summary.json"), self.add_learners)
+        stderr = self.run_script()
+        self.assertNotIn("warning", stderr)
+        self.assert_figure("learners")
+        self.assertIn("CMA-ES", self.svg_text("learners"))
+        for name in ALL:
+            self.assert_figure(name)
+
+    def test_a_learner_run_of_an_unknown_learner_is_an_error(self):
+        def change(summary):
+            self.add_learners(summary)
+            summary["learner_runs"][3]["learner"] = "nsga2"
+        edit_json(os.path.join(self.run_dir, "summary.json"), change)
+        stderr = self.run_script(expect_rc=1)
+        self.assertIn("'learner_runs[3].learner' is 'nsga2', expected one of ga, cmaes", stderr)
 
     def test_missing_summary_is_an_error(self):
         os.remove(os.path.join(self.run_dir, "summary.json"))
@@ -441,7 +500,7 @@ class DrawnFiguresTest(unittest.TestCase):
         runs = [{**run, "replicate": k + 1} for k in range(10) for run in inputs["runs"]
                 if run["replicate"] == 1]
         with module.plt.rc_context(module.STYLE):
-            module.fig8(runs, 10, GENERATIONS, None)
+            module.fig8(runs, inputs["scaffolds"], 10, GENERATIONS, None)
         fig = drawn["fig8"]
         self.assertGreater(fig.get_size_inches()[0], module.DOUBLE)
         titles = [ax.get_title() for ax in fig.axes]
