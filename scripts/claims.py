@@ -404,25 +404,34 @@ def load_reproduction(run_dir):
                 raise InputError(f"{path}: field 'cases.{name}.paper_tripod_finals_of_3' is {k}, "
                                  "outside [0, 3]")
             paper["tripods_of_3"][name] = k
-        runs = []
-        for i, run in enumerate(figures.field(summary, "runs", path, "", list)):
-            where = f"runs[{i}]."
-            entry = {key: figures.field(run, key, path, where, str) for key in ("case", "dir")}
-            entry["replicate"] = figures.field(run, "replicate", path, where, int)
-            if entry["case"] not in cases:
-                raise InputError(f"{path}: field '{where}case' is '{entry['case']}', not one of "
-                                 f"the cases it lists ({', '.join(sorted(cases))})")
-            for gait in ("biped", "tripod"):
-                entry[f"best_{gait}"] = number(run, f"best_{gait}_fitness", path, where,
-                                               allow_null=True)
-            data = figures.load_generations(os.path.join(run_dir, entry["dir"], "generations.csv"))
-            entry["generation"] = [int(g) for g in data["generation"]]
-            entry["best_fitness"] = [float(f) for f in data["best_fitness"]]
-            entry["best_gait"] = list(data["best_gait"])
-            runs.append(entry)
+        runs = [load_run(figures, run_dir, run, path, f"runs[{i}].", cases)
+                for i, run in enumerate(figures.field(summary, "runs", path, "", list))]
+        # with two learners or more, every learner's runs (summary.json's learner_runs)
+        learners = {}
+        if len(summary.get("learners", [])) > 1:
+            for i, run in enumerate(figures.field(summary, "learner_runs", path, "", list)):
+                where = f"learner_runs[{i}]."
+                learner = figures.field(run, "learner", path, where, str)
+                learners.setdefault(learner, []).append(load_run(figures, run_dir, run, path, where, cases))
     except figures.InputError as e:
         raise InputError(str(e)) from None
-    return {"summary": summary, "runs": runs, "paper": paper}
+    return {"summary": summary, "runs": runs, "paper": paper, "learners": learners}
+
+
+def load_run(figures, run_dir, run, path, where, cases):
+    """One run of summary.json with its generations.csv."""
+    entry = {key: figures.field(run, key, path, where, str) for key in ("case", "dir")}
+    entry["replicate"] = figures.field(run, "replicate", path, where, int)
+    if entry["case"] not in cases:
+        raise InputError(f"{path}: field '{where}case' is '{entry['case']}', not one of "
+                         f"the cases it lists ({', '.join(sorted(cases))})")
+    for gait in ("biped", "tripod"):
+        entry[f"best_{gait}"] = number(run, f"best_{gait}_fitness", path, where, allow_null=True)
+    data = figures.load_generations(os.path.join(run_dir, entry["dir"], "generations.csv"))
+    entry["generation"] = [int(g) for g in data["generation"]]
+    entry["best_fitness"] = [float(f) for f in data["best_fitness"]]
+    entry["best_gait"] = list(data["best_gait"])
+    return entry
 
 
 # ----------------------------------------------------------------------------- the claims
@@ -682,6 +691,8 @@ def claim_case2_later_biped(rep):
 # the paper's claims, in the order of its §3
 CLAIMS = (claim_case3_above_case1, claim_case3_leads_generations, claim_case2_below_case1,
           claim_case2_more_tripods, claim_biped_above_tripod, claim_case2_later_biped)
+# the scaffolds' effects, tested for each learner of a reproduction with two or more
+LEARNER_CLAIMS = (claim_case3_above_case1, claim_case2_below_case1, claim_case2_more_tripods)
 
 
 def time_entry(values, never):
@@ -730,7 +741,11 @@ def evaluate(rep):
             "permutations": {"exact_up_to_splits": EXACT_SPLITS,
                              "monte_carlo": MONTE_CARLO_PERMUTATIONS, "seed": SEED},
             "cases": case_table(rep),
-            "findings": [claim(rep) for claim in CLAIMS]}
+            "findings": [claim(rep) for claim in CLAIMS],
+            **({"learners": [{"learner": name,
+                              "findings": [claim({**rep, "runs": runs}) for claim in LEARNER_CLAIMS]}
+                             for name, runs in rep["learners"].items()]}
+               if rep.get("learners") else {})}
 
 
 # ----------------------------------------------------------------------------- output
@@ -761,6 +776,10 @@ def markdown(block):
             f"{fmt_interval(c['final_best']['mean_interval'])} | {t['tripods']} of {c['runs']} "
             f"{fmt_interval(t['wilson'], '{:.0f}', 100, ' %')} | "
             f"{gen_cell(c['first_biped_generation'])} | {gen_cell(c['biped_for_good_generation'])} |")
+    if block.get("learners"):
+        lines += ["", "The scaffolds' effects for each learner, by the same tests and rule:", ""]
+        lines += [f"- {entry['learner']}: {f['line']}" for entry in block["learners"]
+                  for f in entry["findings"]]
     return "\n".join(lines) + "\n"
 
 

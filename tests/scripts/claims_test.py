@@ -15,6 +15,7 @@ import itertools
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -471,6 +472,42 @@ class ClaimsOnRunsTest(unittest.TestCase):
         self.assertIn("median generation never against 5", later["line"])
         self.assertEqual(block["cases"]["time"]["biped_for_good_generation"]["never"], 3)
         self.assertEqual(block["cases"]["time"]["tripod_finals"]["tripods"], 3)
+
+    def test_each_learner_gets_the_scaffolds_claims(self):
+        # the GA's runs follow the paper, another learner's are alike in every case
+        rep_dir = make_reproduction(os.path.join(self.tmp.name, "a"), PAPER_LIKE)
+        alike_dir = make_reproduction(os.path.join(self.tmp.name, "b"), ALIKE)
+        path = os.path.join(rep_dir, "summary.json")
+        with open(path) as f:
+            summary = json.load(f)
+        with open(os.path.join(alike_dir, "summary.json")) as f:
+            alike = json.load(f)["runs"]
+        learner_runs = [{**run, "learner": "ga"} for run in summary["runs"]]
+        for run in alike:
+            name = "pso-" + run["dir"]
+            shutil.copytree(os.path.join(alike_dir, run["dir"]), os.path.join(rep_dir, name))
+            learner_runs.append({**run, "dir": name, "learner": "pso"})
+        summary["learners"] = [{"name": "ga"}, {"name": "pso"}]
+        summary["learner_runs"] = learner_runs
+        with open(path, "w") as f:
+            json.dump(summary, f)
+        block = claims.evaluate(claims.load_reproduction(rep_dir))
+        by_learner = {e["learner"]: {f["id"]: f["verdict"] for f in e["findings"]}
+                      for e in block["learners"]}
+        ids = [c.__name__.replace("claim_", "") for c in claims.LEARNER_CLAIMS]
+        self.assertEqual(sorted(by_learner), ["ga", "pso"])
+        self.assertEqual(list(by_learner["ga"]), ids)
+        self.assertEqual(by_learner["ga"]["case3_above_case1"], "reproduced")
+        self.assertEqual(by_learner["ga"]["case2_below_case1"], "reproduced")
+        self.assertNotEqual(by_learner["pso"]["case2_below_case1"], "reproduced")
+        self.assertNotEqual(by_learner["pso"]["case2_more_tripods"], "reproduced")  # no tripods
+        md = claims.markdown(block)
+        self.assertIn("- pso: Case 3 (performance) ends above case 1 (free)", md)
+        # one learner: no per-learner block
+        summary["learners"] = [{"name": "ga"}]
+        with open(path, "w") as f:
+            json.dump(summary, f)
+        self.assertNotIn("learners", claims.evaluate(claims.load_reproduction(rep_dir)))
 
     def test_alike_cases_do_not_reproduce_the_paper(self):
         found, _ = self.findings(ALIKE)
