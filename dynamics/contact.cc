@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dynamics/contact_laws.h"
 
@@ -105,8 +106,8 @@ void AddContactForces(const Model& model, const Kinematics& kin, const Welds& we
   }
 }
 
-double MaxGroundPenetration(const Model& model, const Kinematics& kin) {
-  double deepest = 0.0;
+double LowestPointDepth(const Model& model, const Kinematics& kin) {
+  double deepest = -std::numeric_limits<double>::infinity();
   const auto deepest_site = [&](const std::vector<GroundSite>& sites, const PointKinematics& p,
                                 const AngleKinematics& a) {
     for (const GroundSite& s : sites) deepest = std::max(deepest, -(p.p.y() + Rotate(a, s.p).y()));
@@ -117,6 +118,10 @@ double MaxGroundPenetration(const Model& model, const Kinematics& kin) {
     deepest = std::max(deepest, model.contact.knee_radius - l.knee.p.y());
   }
   return deepest;
+}
+
+double MaxGroundPenetration(const Model& model, const Kinematics& kin) {
+  return std::max(0.0, LowestPointDepth(model, kin));
 }
 
 bool TrunkSupported(const Model& model, const Kinematics& kin) {

@@ -95,6 +95,10 @@ double JointStopTorque(const JointStop& stop, double angle, double rate);
 // Elastic energy stored in the contact springs and joint stops [J].
 double ElasticEnergy(const Model& model, const Kinematics& kin);
 
+// How far the lowest spring site or knee sphere is below the ground [m]
+// (negative: the whole walker is above it).
+double LowestPointDepth(const Model& model, const Kinematics& kin);
+
 // Deepest penetration of any surface into the ground [m] (0 when nothing touches).
 double MaxGroundPenetration(const Model& model, const Kinematics& kin);
 

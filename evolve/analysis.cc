@@ -25,6 +25,14 @@ constexpr double kPaperBipedOverTripod = 1.375;
 
 json Optional(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 
+// a share as "12.3 %", or "—" for none
+std::string Percent(const std::optional<double>& x) {
+  if (!x) return "—";
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *x);
+  return buf;
+}
+
 json IndividualJson(const std::optional<EvaluatedSummary>& e) {
   if (!e) return nullptr;
   return {{"run", e->run}, {"id", e->id}, {"fitness", e->fitness}};
@@ -199,11 +207,6 @@ json SummaryToJson(const ReproductionSummary& s) {
 std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& title) {
   std::ostringstream md;
   char buf[256];
-  auto pct = [&](const std::optional<double>& x) {
-    if (!x) return std::string("—");
-    std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *x);
-    return std::string(buf);
-  };
   md << "# " << title << "\n\n";
   // one replicate has no spread to show
   bool replicated = false;
@@ -240,9 +243,9 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
     md << ' ' << c.tripod_finals << " of " << c.runs << " | " << scaffold.paper_tripod_finals << " of 3 |\n";
   }
   md << "\n## Findings beside the paper's\n\n| finding | ours | paper |\n|---|---|---|\n";
-  md << "| generations in which case 3's mean best fitness exceeds case 1's | " << pct(s.case3_over_case1)
+  md << "| generations in which case 3's mean best fitness exceeds case 1's | " << Percent(s.case3_over_case1)
      << " | 83 % |\n";
-  md << "| case 2's final mean best fitness as a share of case 1's | " << pct(s.case2_over_case1) << " | 66 % |\n";
+  md << "| case 2's final mean best fitness as a share of case 1's | " << Percent(s.case2_over_case1) << " | 66 % |\n";
   auto who = [&](const std::optional<EvaluatedSummary>& e) {
     if (!e) return std::string("none");
     std::snprintf(buf, sizeof(buf), "%.2f (%s, %s)", e->fitness, e->run.c_str(), e->id.c_str());
@@ -256,7 +259,7 @@ std::string SummaryToMarkdown(const ReproductionSummary& s, const std::string& t
     ratio = buf;
   }
   md << "| best biped's fitness over the best tripod's | " << ratio << " | +37.5 % |\n";
-  md << "| evaluations that fell | " << pct(s.evaluations ? std::optional<double>(double(s.falls) / s.evaluations) : std::nullopt)
+  md << "| evaluations that fell | " << Percent(s.evaluations ? std::optional<double>(double(s.falls) / s.evaluations) : std::nullopt)
      << " | 37–49 % (the authors' runs) |\n";
   std::snprintf(buf, sizeof(buf), "\n%ld evaluations in %.0f s of evaluation time (%.1f per second).\n", s.evaluations,
                 s.evaluation_seconds, s.evaluation_seconds > 0 ? s.evaluations / s.evaluation_seconds : 0.0);
@@ -286,11 +289,6 @@ json LearnersToJson(const std::vector<LearnerSummary>& learners) {
 std::string LearnersToMarkdown(const std::vector<LearnerSummary>& learners) {
   std::ostringstream md;
   char buf[256];
-  auto pct = [&](const std::optional<double>& x) {
-    if (!x) return std::string("—");
-    std::snprintf(buf, sizeof(buf), "%.1f %%", 100.0 * *x);
-    return std::string(buf);
-  };
   md << "## Learners under the scaffolds\n\n"
      << "Final best fitness (mean ± sd over replicates; one replicate: its value) and the runs whose final best is a "
         "tripod.\n\n| learner |";
@@ -315,7 +313,7 @@ std::string LearnersToMarkdown(const std::vector<LearnerSummary>& learners) {
       }
       md << buf;
     }
-    md << ' ' << pct(l.summary.case3_over_case1) << " | " << pct(l.summary.case2_over_case1) << " |\n";
+    md << ' ' << Percent(l.summary.case3_over_case1) << " | " << Percent(l.summary.case2_over_case1) << " |\n";
   }
   return md.str();
 }

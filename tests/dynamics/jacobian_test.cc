@@ -30,22 +30,9 @@ class JacobianTest : public testing::DefaultWalkerTest {
   State Pressed(State s, double depth) {
     Kinematics kin;
     ComputeKinematics(model_, s.q, s.v, &kin);
-    s.q(kY) += LowestPointDepth(kin) - depth;
+    s.q(kY) += LowestPointDepth(model_, kin) - depth;
     s.v = testing::RandomVector<kNumCoords>(rng_, -0.05, 0.05);
     return s;
-  }
-  // how far the lowest spring site or knee sphere is below the ground (< 0: above)
-  double LowestPointDepth(const Kinematics& kin) const {
-    double deepest = -1e9;
-    const auto sites = [&](const std::vector<GroundSite>& list, const PointKinematics& p, const AngleKinematics& a) {
-      for (const GroundSite& g : list) deepest = std::max(deepest, -(p.p.y() + Rotate(a, g.p).y()));
-    };
-    sites(model_.sites.trunk_ground, kin.trunk, kin.pitch);
-    for (const LegKinematics& l : kin.legs) {
-      sites(model_.sites.foot_ground, l.ankle, l.foot);
-      deepest = std::max(deepest, model_.contact.knee_radius - l.knee.p.y());
-    }
-    return deepest;
   }
   ContactReports Reports(const State& s) const {
     Kinematics kin;

@@ -2,18 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/evolve/individuals.h"
+
 namespace walkers {
 namespace {
 
-Individual WithFitness(int generation, int child, double fitness) {
-  Individual ind;
-  ind.generation = generation;
-  ind.child = child;
-  ind.genome = DefaultGenome();
-  ind.genome[kKx] = 100.0 * generation + child;  // distinct genomes
-  ind.result.fitness = fitness;
-  return ind;
-}
+using testing::WithFitness;
 
 class BreedTest : public ::testing::Test {
  protected:
