@@ -7,6 +7,7 @@
 #include "control/start_pose.h"
 #include "dynamics/contact.h"
 #include "dynamics/kinematics.h"
+#include "dynamics/planting.h"
 
 namespace walkers {
 
@@ -59,6 +60,25 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
     }
     result.distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
   };
+  // the controller's inputs from now on; a weld switched on first projects
+  // the state onto every active weld, as the authors' program calls
+  // project() after enabling one
+  const auto hold = [&](const Inputs& inputs) {
+    bool weld_added = false;
+    for (int leg = 0; leg < kNumLegs; ++leg) {
+      weld_added = weld_added || (inputs.welds[leg].active && !SameWeld(inputs.welds[leg], integrator.inputs().welds[leg]));
+    }
+    if (weld_added && settings.project_on_plant) {
+      State projected = integrator.state();
+      if (!ProjectOntoWelds(model, inputs.welds, &projected)) {
+        result.failure = "projection onto the welds did not converge at t=" + std::to_string(integrator.time());
+        return false;
+      }
+      integrator.SetState(projected);
+    }
+    integrator.SetInputs(inputs);
+    return true;
+  };
   const auto advance = [&](long k) {
     const IntegrationStatus status = integrator.AdvanceTo(k / kControlRate);
     if (!status.ok()) result.failure = status.reason;
@@ -71,7 +91,7 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
       result.fell = true;
       break;
     }
-    integrator.SetInputs(controller.Tick(t, integrator.state()));
+    if (!hold(controller.Tick(t, integrator.state()))) break;
     if (controller.awaits_extra_step()) {
       if (observer) observer(t, integrator.state(), controller);
       if (!advance(++k)) break;
@@ -81,7 +101,7 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
         result.fell = true;
         break;
       }
-      integrator.SetInputs(controller.FinishTick(integrator.state()));
+      if (!hold(controller.FinishTick(integrator.state()))) break;
     }
     if (observer) observer(t, integrator.state(), controller);
     if (!advance(++k)) break;

@@ -28,6 +28,10 @@ struct EvaluationSettings {
   IntegratorSettings integrator;
   ContactParameters contact;
   WeldParameters weld;
+  // Switching a weld on projects the state onto the active welds as the
+  // authors' program does (ProjectOntoWelds), instead of letting the weld's
+  // stabilisation pull the foot into place.
+  bool project_on_plant = true;
 };
 
 struct EvaluationResult {

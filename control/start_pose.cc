@@ -8,11 +8,7 @@ namespace walkers {
 
 Welds StartWelds(const Model& model) {
   Welds welds;
-  for (Weld& w : welds) {
-    w.active = true;
-    w.anchor = Vec2(0.0, model.body.half_foot_y - model.weld.depth);
-    w.angle = 0.0;
-  }
+  for (Weld& w : welds) w = FlatWeldAt(model, 0.0);
   return welds;
 }
 

@@ -47,6 +47,8 @@ BodyMotion<double> MotionOf(const Kinematics& kin, ContactBody body) {
   m.v = k.point->v;
   m.angle = k.angle->angle;
   m.rate = k.angle->rate;
+  m.cos = k.angle->c;
+  m.sin = k.angle->s;
   return m;
 }
 
@@ -58,12 +60,17 @@ bool PairEnabled(const ModelOptions& options, const ContactPairSpec& spec) {
 // they hold (HeldByWeld), which are then not computed at all
 template <typename Visit>
 void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit, const Welds* welds = nullptr) {
+  std::array<BodyMotion<double>, kNumContactBodies> motions;
+  for (int i = 0; i < kNumContactBodies; ++i) motions[i] = MotionOf(kin, static_cast<ContactBody>(i));
   for (int pair = 0; pair < kNumContactPairs; ++pair) {
     const ContactPairSpec& spec = ContactPairs()[pair];
     if (!PairEnabled(model.options, spec)) continue;
     if (welds && HeldByWeld(spec, *welds)) continue;
+    const BodyMotion<double>& a = motions[static_cast<int>(spec.a)];
+    const BodyMotion<double>& b = motions[static_cast<int>(spec.b)];
+    if (!contact_laws::MayTouch(model, spec, a, b)) continue;
     visit(pair, spec,
-          contact_laws::PairContact<double>(model, pair, MotionOf(kin, spec.a), MotionOf(kin, spec.b)));
+          contact_laws::PairContact<double>(model, pair, a, b));
   }
 }
 

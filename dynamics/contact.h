@@ -11,6 +11,7 @@
 #include "dynamics/coords.h"
 #include "dynamics/kinematics.h"
 #include "dynamics/model.h"
+#include "dynamics/weld.h"
 
 namespace walkers {
 
@@ -54,14 +55,6 @@ struct ContactPairSpec {
   bool self_contact;   // between two of the walker's own bodies
 };
 const std::array<ContactPairSpec, kNumContactPairs>& ContactPairs();
-
-// A foot held at a planting pose by its weld (an exact constraint, ForwardDynamics).
-struct Weld {
-  bool active = false;
-  Vec2 anchor = Vec2::Zero();  // where the foot's centre is held [m]
-  double angle = 0;            // foot angle held [rad]
-};
-using Welds = std::array<Weld, kNumLegs>;
 
 // What a pair does at one instant.
 struct ContactReport {

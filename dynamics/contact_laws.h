@@ -24,13 +24,16 @@ template <typename S>
 using V2 = Eigen::Matrix<S, 2, 1>;
 
 // The rigid motion of a contacting body: its reference point (trunk centre,
-// ankle, knee) and absolute angle, and their rates.
+// ankle, knee) and absolute angle, and their rates; with the angle's cosine
+// and sine.
 template <typename S>
 struct BodyMotion {
   V2<S> p = V2<S>::Zero();
   V2<S> v = V2<S>::Zero();
   S angle = S(0);
   S rate = S(0);
+  S cos = S(1);
+  S sin = S(0);
 };
 
 // Force and torque about the body's reference point.
@@ -148,14 +151,11 @@ bool FoundationNormal(const FoundationLaw& law, double area, const S& d, const S
 
 // ---- a brick mesh on the ground ----
 template <typename S>
-void MeshOnGround(const FoundationLaw& law, const std::vector<GroundSite>& sites, const Vec2& half,
-                  const BodyMotion<S>& body, Wrench<S>* w, ContactReport* r) {
-  using std::cos;
-  using std::sin;
-  // nothing below the ground: the box's lowest corner is above it
-  const double ca = std::cos(Value(body.angle)), sa = std::sin(Value(body.angle));
-  if (Value(body.p.y()) - (std::abs(sa) * half.x() + std::abs(ca) * half.y()) >= 0.0) return;
-  const S c = cos(body.angle), s = sin(body.angle);
+void MeshOnGround(const FoundationLaw& law, const std::vector<GroundSite>& sites, const BodyMotion<S>& body,
+                  Wrench<S>* w, ContactReport* r) {
+  const double ca = Value(body.cos), sa = Value(body.sin);
+  const S& c = body.cos;
+  const S& s = body.sin;
   const double y = Value(body.p.y());
   for (const GroundSite& site : sites) {
     // a site above the ground pushes nothing; tested in plain doubles, before any S arithmetic
@@ -207,10 +207,10 @@ template <typename S>
 void MeshInBox(const FoundationLaw& law, double scale, const std::vector<BoxSite>& sites,
                const BodyMotion<S>& m, const BodyMotion<S>& o, const Vec2& half_o, Wrench<S>* w_m, Wrench<S>* w_o,
                ContactReport* r, double report_sign) {
-  using std::cos;
-  using std::sin;
-  const S cm = cos(m.angle), sm = sin(m.angle);
-  const S co = cos(o.angle), so = sin(o.angle);
+  const S& cm = m.cos;
+  const S& sm = m.sin;
+  const S& co = o.cos;
+  const S& so = o.sin;
   // In plain doubles first, whether a site is inside the other box at all:
   // in the other box's frame it sits at u0 + R(angle_m - angle_o) site.p.
   const double cmv = Value(cm), smv = Value(sm), cov = Value(co), sov = Value(so);
@@ -268,10 +268,9 @@ template <typename S>
 void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites, double radius,
                   const BodyMotion<S>& m, const BodyMotion<S>& k, Wrench<S>* w_m, Wrench<S>* w_k,
                   ContactReport* r) {
-  using std::cos;
-  using std::sin;
   using std::sqrt;
-  const S c = cos(m.angle), s = sin(m.angle);
+  const S& c = m.cos;
+  const S& s = m.sin;
   const double r2 = radius * radius;
   // In plain doubles first, whether a site is inside the sphere at all: the
   // sphere's centre in the mesh's frame
@@ -306,8 +305,50 @@ void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites
   }
 }
 
-// The geometry a pair needs, and a quick test that its surfaces are apart.
-inline double Circumradius(const Vec2& half) { return half.norm(); }
+// The right-hand side's instances of the three foundation laws are written
+// out in dynamics/contact_sums.cc: the same physics summed in the frame of
+// one of the pair's bodies, where a site's position and velocity cost a few
+// operations, and each body's wrench is formed once from the sums. The
+// templates above stay the reference; the automatic differentiation of the
+// Jacobian runs them, and tests/dynamics/contact_test.cc checks that both agree.
+template <>
+void MeshOnGround<double>(const FoundationLaw& law, const std::vector<GroundSite>& sites,
+                          const BodyMotion<double>& body, Wrench<double>* w, ContactReport* r);
+template <>
+void MeshInBox<double>(const FoundationLaw& law, double scale, const std::vector<BoxSite>& sites,
+                       const BodyMotion<double>& m, const BodyMotion<double>& o, const Vec2& half_o,
+                       Wrench<double>* w_m, Wrench<double>* w_o, ContactReport* r, double report_sign);
+template <>
+void MeshInSphere<double>(const FoundationLaw& law, const std::vector<SphereSite>& sites, double radius,
+                          const BodyMotion<double>& m, const BodyMotion<double>& k, Wrench<double>* w_m,
+                          Wrench<double>* w_k, ContactReport* r);
+
+// Whether a pair's surfaces can touch at all, in plain doubles: a mesh whose
+// box's lowest corner, or a knee sphere whose lowest point, is below the
+// ground; two bodies whose circumcircles overlap (the knee's is its sphere).
+// PairContact computes nothing for a pair that cannot; a caller visiting every
+// pair asks first and skips the call.
+template <typename S>
+bool MayTouch(const Model& model, const ContactPairSpec& spec, const BodyMotion<S>& a, const BodyMotion<S>& b) {
+  const BodyParameters& body = model.body;
+  const Vec2 half_trunk(body.half_body_x, body.half_body_y), half_foot(body.half_foot_x, body.half_foot_y);
+  const double radius = model.contact.knee_radius;
+  const auto half_of = [&](ContactBody mesh) { return mesh == ContactBody::kTrunk ? half_trunk : half_foot; };
+  const double gap = Vec2(Value(a.p.x()) - Value(b.p.x()), Value(a.p.y()) - Value(b.p.y())).norm();
+  switch (spec.law) {
+    case ContactLaw::kMeshOnGround: {
+      const Vec2 half = half_of(spec.b);
+      return Value(b.p.y()) - (std::abs(Value(b.sin)) * half.x() + std::abs(Value(b.cos)) * half.y()) < 0.0;
+    }
+    case ContactLaw::kSphereOnGround:
+      return Value(b.p.y()) < radius;
+    case ContactLaw::kMeshOnMesh:
+      return gap < half_trunk.norm() + half_foot.norm();
+    case ContactLaw::kMeshOnSphere:
+      return gap < half_of(spec.a).norm() + radius;
+  }
+  return true;
+}
 
 // One pair's wrenches on its bodies a and b (a's motion unused for the ground).
 template <typename S>
@@ -318,22 +359,20 @@ PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, 
   const ContactSites& sites = model.sites;
   const Vec2 half_trunk(body.half_body_x, body.half_body_y), half_foot(body.half_foot_x, body.half_foot_y);
   const double radius = model.contact.knee_radius;
+  if (!MayTouch<S>(model, spec, a, b)) return out;
   switch (spec.law) {
     case ContactLaw::kMeshOnGround:
       if (spec.b == ContactBody::kTrunk) {
-        MeshOnGround<S>(model.laws.mesh_ground, sites.trunk_ground, half_trunk, b, &out.on_b, &out.report);
+        MeshOnGround<S>(model.laws.mesh_ground, sites.trunk_ground, b, &out.on_b, &out.report);
       } else {
-        MeshOnGround<S>(model.laws.mesh_ground, sites.foot_ground, half_foot, b, &out.on_b, &out.report);
+        MeshOnGround<S>(model.laws.mesh_ground, sites.foot_ground, b, &out.on_b, &out.report);
       }
       break;
     case ContactLaw::kSphereOnGround:
       SphereOnGround<S>(model.laws.knee_ground, radius, b, &out.on_b, &out.report);
       break;
     case ContactLaw::kMeshOnMesh: {
-      // a = trunk, b = foot: apart while their circumcircles are
-      const double gap = (V2<double>(Value(a.p.x()), Value(a.p.y())) - Vec2(Value(b.p.x()), Value(b.p.y()))).norm();
-      if (gap >= Circumradius(half_trunk) + Circumradius(half_foot)) break;
-      // each mesh's springs carry half the patch (docs/model.md)
+      // a = trunk, b = foot; each mesh's springs carry half the patch (docs/model.md)
       MeshInBox<S>(model.laws.mesh_mesh, 0.5, sites.trunk_in_foot[spec.leg], a, b, half_foot, &out.on_a, &out.on_b,
                    &out.report, -1.0);
       MeshInBox<S>(model.laws.mesh_mesh, 0.5, sites.foot_in_trunk[spec.leg], b, a, half_trunk, &out.on_b,
@@ -342,9 +381,6 @@ PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, 
     }
     case ContactLaw::kMeshOnSphere: {
       // a = the mesh (trunk or foot), b = the knee
-      const Vec2& half = spec.a == ContactBody::kTrunk ? half_trunk : half_foot;
-      const double gap = (V2<double>(Value(a.p.x()), Value(a.p.y())) - Vec2(Value(b.p.x()), Value(b.p.y()))).norm();
-      if (gap >= Circumradius(half) + radius) break;
       const std::vector<SphereSite>& list =
           spec.a == ContactBody::kTrunk ? sites.trunk_in_knee[spec.leg] : sites.foot_in_knee;
       MeshInSphere<S>(model.laws.mesh_knee, list, radius, a, b, &out.on_a, &out.on_b, &out.report);

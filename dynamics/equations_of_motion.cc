@@ -88,6 +88,24 @@ void AddPointMassForces(double m, double gravity, const PointKinematics& p, Vec9
   AddTransposeProduct(p, f, Q);
 }
 
+// The welds' part of the forward dynamics for their R rows: G, M^-1 G^T, the
+// factors of G M^-1 G^T and lambda into the workspace, qdd corrected.
+template <int R>
+void SolveWelds(const Model& model, const Welds& welds, Workspace* ws, Vec9* qdd) {
+  WeldVector b;
+  WeldConstraints(model, ws->kin, welds, &ws->G, &b);
+  Eigen::Matrix<double, kNumCoords, R> Minv_Gt = ws->G.topRows<R>().transpose();
+  ws->mass_ldlt.SolveInPlace(&Minv_Gt);
+  ws->Minv_Gt.leftCols<R>() = Minv_Gt;
+  const Eigen::Matrix<double, R, R> S = ws->G.topRows<R>().lazyProduct(Minv_Gt);
+  if constexpr (R == kWeldRowsPerFoot) {
+    ws->one_weld_ldlt.Compute(S);
+  } else {
+    ws->two_welds_ldlt.Compute(S);
+  }
+  ws->lambda.head<R>() = ws->ApplyWelds<R, 1>(b.head<R>(), qdd);
+}
+
 }  // namespace
 
 void MassMatrix(const Model& model, const Kinematics& kin, Mat9* M) {
@@ -129,30 +147,6 @@ void GeneralizedForces(const Model& model, const Inputs& inputs, const Kinematic
   if (model.options.joint_stops) AddJointStopTorques(model, q, v, Q);
 }
 
-void WeldConstraints(const Model& model, const Kinematics& kin, const Welds& welds, WeldJacobian* G, WeldVector* b) {
-  int rows = 0;
-  for (const Weld& w : welds) rows += w.active ? 3 : 0;
-  G->setZero(rows, kNumCoords);
-  b->setZero(rows);
-  const double a = model.weld.stabilization;
-  int row = 0;
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    const Weld& w = welds[leg];
-    if (!w.active) continue;
-    const LegKinematics& l = kin.legs[leg];
-    // the foot centre: J q'' + a_bias = -2a v - a^2 (p - anchor)
-    G->middleRows<2>(row) = l.ankle.J;
-    b->segment<2>(row) = -l.ankle.a_bias - 2.0 * a * l.ankle.v - a * a * (l.ankle.p - w.anchor);
-    // the foot angle: j q'' = -2a w - a^2 (angle - held)
-    G->row(row + 2) = l.foot.j;
-    (*b)(row + 2) = -2.0 * a * l.foot.rate - a * a * (l.foot.angle - w.angle);
-    row += 3;
-  }
-  for (int i = 0; i < kNumCoords; ++i) {
-    if (model.options.locked[i]) G->col(i).setZero();
-  }
-}
-
 bool ForwardDynamics(const Model& model, const Inputs& inputs, const Vec9& q, const Vec9& v, Workspace* ws,
                      Vec9* qdd) {
   ComputeKinematics(model, q, v, &ws->kin);
@@ -174,20 +168,11 @@ bool ForwardDynamics(const Model& model, const Inputs& inputs, const Vec9& q, co
 
   // the welds: q'' = M^-1 (Q + G^T lambda) with lambda from
   // (G M^-1 G^T) lambda = b - G M^-1 Q
-  WeldVector b;
-  WeldConstraints(model, ws->kin, inputs.welds, &ws->G, &b);
-  const int rows = static_cast<int>(ws->G.rows());
-  ws->lambda.setZero(rows);
-  if (rows > 0) {
-    ws->Minv_Gt = ws->G.transpose();
-    for (int j = 0; j < rows; ++j) {
-      Vec9 column = ws->Minv_Gt.col(j);
-      ws->mass_ldlt.SolveInPlace(&column);
-      ws->Minv_Gt.col(j) = column;
-    }
-    ws->weld_ldlt.Compute(ws->G * ws->Minv_Gt);
-    ws->lambda = ws->weld_ldlt.Solve(WeldVector(b - ws->G * (*qdd)));
-    *qdd += ws->Minv_Gt * ws->lambda;
+  ws->weld_rows = ActiveWeldRows(inputs.welds);
+  if (ws->weld_rows == kWeldRowsPerFoot) {
+    SolveWelds<kWeldRowsPerFoot>(model, inputs.welds, ws, qdd);
+  } else if (ws->weld_rows == kMaxWeldRows) {
+    SolveWelds<kMaxWeldRows>(model, inputs.welds, ws, qdd);
   }
   return qdd->allFinite();
 }

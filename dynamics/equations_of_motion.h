@@ -8,6 +8,7 @@
 #include "dynamics/kinematics.h"
 #include "dynamics/model.h"
 #include "dynamics/tree_ldlt9.h"
+#include "dynamics/weld.h"
 
 #include <cmath>
 
@@ -21,29 +22,24 @@ struct Inputs {
   Welds welds;                       // planted feet
 };
 
-// The welds' constraint rows: for each active weld the foot centre's two and
-// its angle's one, stacked (at most two welds).
-constexpr int kMaxWeldRows = 6;
-using WeldJacobian = Eigen::Matrix<double, Eigen::Dynamic, kNumCoords, 0, kMaxWeldRows, kNumCoords>;
-using WeldVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxWeldRows, 1>;
-using WeldSquare = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxWeldRows, kMaxWeldRows>;
-
-// LDL^T of the welds' G M^-1 G^T that solves it in the least-squares sense
-// when G loses rank (locked joints, or both welded legs straight): pivots
-// below kRankTolerance of the largest count as zero, as a pseudo-inverse
-// would have it, so redundant constraints share their load instead of
-// producing huge multipliers.
+// LDL^T of the welds' R x R matrix G M^-1 G^T (R = 3 per active weld) that
+// solves it in the least-squares sense when G loses rank (locked joints, or
+// both welded legs straight): pivots below kRankTolerance of the largest
+// count as zero, as a pseudo-inverse would have it, so redundant constraints
+// share their load instead of producing huge multipliers.
+template <int R>
 class WeldLdlt {
  public:
+  using Square = Eigen::Matrix<double, R, R>;
   static constexpr double kRankTolerance = 1e-10;
-  void Compute(const WeldSquare& S) { ldlt_.compute(S); }
+  void Compute(const Square& S) { ldlt_.compute(S); }
   template <typename Rhs>
   Rhs Solve(const Rhs& rhs) const {
     Rhs x = ldlt_.transpositionsP() * rhs;
     ldlt_.matrixL().solveInPlace(x);
     const auto d = ldlt_.vectorD();
     const double floor = kRankTolerance * d.cwiseAbs().maxCoeff();
-    for (int i = 0; i < d.size(); ++i) {
+    for (int i = 0; i < R; ++i) {
       if (std::abs(d(i)) > floor) {
         x.row(i) /= d(i);
       } else {
@@ -55,7 +51,7 @@ class WeldLdlt {
   }
 
  private:
-  Eigen::LDLT<WeldSquare> ldlt_;
+  Eigen::LDLT<Square> ldlt_;
 };
 
 // Per-integration scratch: nothing in it outlives one right-hand side.
@@ -64,13 +60,35 @@ struct Workspace {
   Mat9 M = Mat9::Identity();
   Vec9 Q = Vec9::Zero();
   TreeLdlt9 mass_ldlt;  // of M (locked rows and columns replaced by the identity)
-  // the welds: G (rows of the constraints' Jacobian), M^-1 G^T, the LDL^T
-  // of G M^-1 G^T, and the constraint forces' multipliers lambda (G^T lambda
-  // is the welds' generalized force)
-  WeldJacobian G;
-  Eigen::Matrix<double, kNumCoords, Eigen::Dynamic, 0, kNumCoords, kMaxWeldRows> Minv_Gt;
-  WeldLdlt weld_ldlt;
-  WeldVector lambda;
+  // the welds: their rows (ActiveWeldRows: 0, 3 or 6), G (the constraints'
+  // Jacobian), M^-1 G^T, the LDL^T of G M^-1 G^T for one weld or two, and
+  // the constraint forces' multipliers lambda (G^T lambda is the welds'
+  // generalized force). Only the first weld_rows rows (columns of Minv_Gt) hold.
+  int weld_rows = 0;
+  WeldJacobian G = WeldJacobian::Zero();
+  Eigen::Matrix<double, kNumCoords, kMaxWeldRows> Minv_Gt = Eigen::Matrix<double, kNumCoords, kMaxWeldRows>::Zero();
+  WeldLdlt<kWeldRowsPerFoot> one_weld_ldlt;
+  WeldLdlt<kMaxWeldRows> two_welds_ldlt;
+  WeldVector lambda = WeldVector::Zero();
+
+  // For the active welds' R rows: the change of x (M^-1 times a generalized
+  // force, or nine of them) that the welds' constraint forces make so that
+  // G x = r, x += M^-1 G^T S^+ (r - G x) with S = G M^-1 G^T; returns the
+  // multipliers S^+ (r - G x).
+  template <int R, int Cols>
+  Eigen::Matrix<double, R, Cols> ApplyWelds(const Eigen::Matrix<double, R, Cols>& r,
+                                            Eigen::Matrix<double, kNumCoords, Cols>* x) const {
+    // products this small are cheapest coefficient by coefficient
+    const Eigen::Matrix<double, R, Cols> residual = r - G.topRows<R>().lazyProduct(*x);
+    Eigen::Matrix<double, R, Cols> multipliers;
+    if constexpr (R == kWeldRowsPerFoot) {
+      multipliers = one_weld_ldlt.Solve(residual);
+    } else {
+      multipliers = two_welds_ldlt.Solve(residual);
+    }
+    x->noalias() += Minv_Gt.leftCols<R>().lazyProduct(multipliers);
+    return multipliers;
+  }
 };
 
 // Mass matrix from computed kinematics: sum of m J^T J over point masses and
@@ -81,10 +99,6 @@ Mat9 MassMatrix(const Model& model, const Vec9& q);
 // Every generalized force except M q'' (right-hand side of the equations).
 void GeneralizedForces(const Model& model, const Inputs& inputs, const Kinematics& kin, const Vec9& q,
                        const Vec9& v, Vec9* Q);
-
-// The constraint rows of the active welds at the kinematics' state: G and
-// the right-hand side b of G q'' = b (see ForwardDynamics).
-void WeldConstraints(const Model& model, const Kinematics& kin, const Welds& welds, WeldJacobian* G, WeldVector* b);
 
 // Solves M q'' = Q + G^T lambda for q'' with the active welds' constraints
 // G q'' = -G' q' - 2 a G q' - a^2 e (Baumgarte's stabilisation of their

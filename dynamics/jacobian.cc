@@ -104,6 +104,8 @@ BodyMotion<AD> SeededMotion(const ContactBodyKinematics& k, int first) {
     m.v = m.p;
     m.angle = AD(0.0, Partials::Zero());
     m.rate = m.angle;
+    m.cos = AD(1.0, Partials::Zero());
+    m.sin = m.angle;
     return m;
   }
   const auto seed = [&](double value, int i) { return AD(value, Partials::Unit(first + i)); };
@@ -111,6 +113,9 @@ BodyMotion<AD> SeededMotion(const ContactBodyKinematics& k, int first) {
   m.angle = seed(k.angle->angle, 2);
   m.v = contact_laws::V2<AD>(seed(k.point->v.x(), 3), seed(k.point->v.y(), 4));
   m.rate = seed(k.angle->rate, 5);
+  // d cos = -sin d angle, d sin = cos d angle
+  m.cos = AD(k.angle->c, -k.angle->s * Partials::Unit(first + 2));
+  m.sin = AD(k.angle->s, k.angle->c * Partials::Unit(first + 2));
   return m;
 }
 
@@ -127,10 +132,12 @@ void MotionDerivatives(const ContactBodyKinematics& k, int first, Eigen::Matrix<
 
 void AddContactDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, Mat9* dR_dq,
                            Mat9* dR_dv) {
+  // the pairs apart, found in plain doubles, need no differentiation
+  const ContactReports reports = ReportContacts(model, kin);
   for (int pair = 0; pair < kNumContactPairs; ++pair) {
     const ContactPairSpec& spec = ContactPairs()[pair];
     if (!model.options.contact || (spec.self_contact && !model.options.self_contact)) continue;
-    if (HeldByWeld(spec, welds)) continue;
+    if (HeldByWeld(spec, welds) || !reports[pair].touching) continue;
     const ContactBodyKinematics ka = KinematicsOf(kin, spec.a), kb = KinematicsOf(kin, spec.b);
     const contact_laws::PairResult<AD> r =
         contact_laws::PairContact<AD>(model, pair, SeededMotion(ka, 0), SeededMotion(kb, 6));
@@ -145,64 +152,12 @@ void AddContactDerivatives(const Model& model, const Kinematics& kin, const Weld
       d.row(0) = w.force.x().derivatives().transpose();
       d.row(1) = w.force.y().derivatives().transpose();
       d.row(2) = w.torque.derivatives().transpose();
-      const Eigen::Matrix<double, 3, kNumCoords> d_dq = d * dm_dq, d_dv = d * dm_dv;
+      const Eigen::Matrix<double, 3, kNumCoords> d_dq = d.lazyProduct(dm_dq), d_dv = d.lazyProduct(dm_dv);
       AddWrenchDerivatives(*k.point, *k.angle, Vec2(w.force.x().value(), w.force.y().value()), d_dq.topRows<2>(),
                            d_dv.topRows<2>(), d_dq.row(2), d_dv.row(2), dR_dq, dR_dv);
     };
     add(ka, r.on_a);
     add(kb, r.on_b);
-  }
-}
-
-// The welds' constraint forces G^T lambda at fixed lambda: the foot centre's
-// part turns with the links of the ankle point (the angle's row is constant).
-void AddWeldForceDerivatives(const Kinematics& kin, const Welds& welds, const WeldVector& lambda, Mat9* dR_dq) {
-  int row = 0;
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    if (!welds[leg].active) continue;
-    const PointKinematics& ankle = kin.legs[leg].ankle;
-    const Vec2 F = lambda.segment<2>(row);
-    for (int k = 0; k < ankle.num_links; ++k) {
-      const PointKinematics::Link& link = ankle.links[k];
-      dR_dq->noalias() += (-link.r.dot(F)) * link.body->j.transpose() * link.body->j;
-    }
-    row += 3;
-  }
-}
-
-// The derivatives of the weld constraints G q'' + G' q' + 2a G q' + a^2 e = 0
-// (ForwardDynamics) with respect to q and v at fixed q''.
-void WeldConstraintDerivatives(const Model& model, const Kinematics& kin, const Welds& welds, const Vec9& a,
-                               WeldJacobian* C_q, WeldJacobian* C_v) {
-  int rows = 0;
-  for (const Weld& w : welds) rows += w.active ? 3 : 0;
-  C_q->setZero(rows, kNumCoords);
-  C_v->setZero(rows, kNumCoords);
-  const double s = model.weld.stabilization;
-  int row = 0;
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    if (!welds[leg].active) continue;
-    const LegKinematics& l = kin.legs[leg];
-    // the foot centre: d(J a + a_bias)/dq = -sum (r_k (j_k a) + perp(r_k) w_k^2) j_k,
-    // d(a_bias)/dv = -sum 2 w_k r_k j_k, d(J v)/dq = PointVelocityJacobian
-    Jac2x9 d_acc_dq = Jac2x9::Zero(), d_bias_dv = Jac2x9::Zero();
-    for (int k = 0; k < l.ankle.num_links; ++k) {
-      const PointKinematics::Link& link = l.ankle.links[k];
-      const double w = link.body->rate;
-      d_acc_dq.noalias() -= (link.r * link.body->j.dot(a) + Perp(link.r) * (w * w)) * link.body->j;
-      d_bias_dv.noalias() -= (2.0 * w) * link.r * link.body->j;
-    }
-    C_q->middleRows<2>(row) = d_acc_dq + 2.0 * s * PointVelocityJacobian(l.ankle) + s * s * l.ankle.J;
-    C_v->middleRows<2>(row) = d_bias_dv + 2.0 * s * l.ankle.J;
-    // the foot angle: its row is constant
-    C_q->row(row + 2) = s * s * l.foot.j;
-    C_v->row(row + 2) = 2.0 * s * l.foot.j;
-    row += 3;
-  }
-  for (int i = 0; i < kNumCoords; ++i) {
-    if (!model.options.locked[i]) continue;
-    C_q->col(i).setZero();
-    C_v->col(i).setZero();
   }
 }
 
@@ -221,15 +176,17 @@ Eigen::Vector2d JointStopDerivatives(const JointStop& stop, double angle, double
   return Eigen::Vector2d::Zero();
 }
 
-}  // namespace
-
-Jac2x9 PointVelocityJacobian(const PointKinematics& p) {
-  Jac2x9 dv_dq = Jac2x9::Zero();
-  for (int k = 0; k < p.num_links; ++k) {
-    dv_dq.noalias() -= (p.links[k].body->rate * p.links[k].r) * p.links[k].body->j;
-  }
-  return dv_dq;
+// da/dq and da/dv with the welds' constraints on the accelerations held, for their R rows
+template <int R>
+void ConstrainByWelds(const Model& model, const Welds& welds, const Vec9& a, const Workspace& ws, Mat9* da_dq,
+                      Mat9* da_dv) {
+  WeldJacobian C_q, C_v;
+  WeldConstraintDerivatives(model, ws.kin, welds, a, &C_q, &C_v);
+  ws.ApplyWelds<R, kNumCoords>(-C_q.topRows<R>(), da_dq);
+  ws.ApplyWelds<R, kNumCoords>(-C_v.topRows<R>(), da_dv);
 }
+
+}  // namespace
 
 bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& q, const Vec9& v, Workspace* ws,
                           Mat9* da_dq, Mat9* da_dv) {
@@ -275,11 +232,10 @@ bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& 
 
   // the welds hold: M da = dR + G^T dlambda with G da = -C, so
   // da = M^-1 dR - M^-1 G^T (G M^-1 G^T)^-1 (C + G M^-1 dR)
-  if (ws->G.rows() > 0) {
-    WeldJacobian C_q, C_v;
-    WeldConstraintDerivatives(model, kin, inputs.welds, a, &C_q, &C_v);
-    *da_dq -= ws->Minv_Gt * ws->weld_ldlt.Solve(WeldJacobian(C_q + ws->G * (*da_dq)));
-    *da_dv -= ws->Minv_Gt * ws->weld_ldlt.Solve(WeldJacobian(C_v + ws->G * (*da_dv)));
+  if (ws->weld_rows == kWeldRowsPerFoot) {
+    ConstrainByWelds<kWeldRowsPerFoot>(model, inputs.welds, a, *ws, da_dq, da_dv);
+  } else if (ws->weld_rows == kMaxWeldRows) {
+    ConstrainByWelds<kMaxWeldRows>(model, inputs.welds, a, *ws, da_dq, da_dv);
   }
   return da_dq->allFinite() && da_dv->allFinite();
 }

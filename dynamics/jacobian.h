@@ -11,9 +11,6 @@
 
 namespace walkers {
 
-// (d/dq, d/dv) of a point's velocity J v: d(Jv)/dq = sum_k -r_k w_k j_k.
-Jac2x9 PointVelocityJacobian(const PointKinematics& p);
-
 // da/dq and da/dv at (q, v). Runs ForwardDynamics on the workspace first.
 // Returns false if the accelerations are not finite.
 bool AccelerationJacobian(const Model& model, const Inputs& inputs, const Vec9& q, const Vec9& v, Workspace* ws,

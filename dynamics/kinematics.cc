@@ -159,4 +159,12 @@ State StandingState(const Model& model, double knee_flexion, double foot_x) {
   return s;
 }
 
+Jac2x9 PointVelocityJacobian(const PointKinematics& p) {
+  Jac2x9 dv_dq = Jac2x9::Zero();
+  for (int k = 0; k < p.num_links; ++k) {
+    dv_dq.noalias() -= (p.links[k].body->rate * p.links[k].r) * p.links[k].body->j;
+  }
+  return dv_dq;
+}
+
 }  // namespace walkers

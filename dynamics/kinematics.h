@@ -88,6 +88,9 @@ inline void AddTransposeProduct(const AngleKinematics& a, double torque, Vec9* Q
   for (int i : ColumnsOf(a.leg)) (*Q)(i) += a.j(i) * torque;
 }
 
+// d(J v)/dq of a point's velocity: sum_k -r_k w_k j_k.
+Jac2x9 PointVelocityJacobian(const PointKinematics& p);
+
 // perp(r) = (-r_y, r_x) = dr/dangle for a vector turning with an angle.
 inline Vec2 Perp(const Vec2& r) { return Vec2(-r.y(), r.x()); }
 

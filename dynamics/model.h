@@ -6,6 +6,7 @@
 
 #include "dynamics/contact_geometry.h"
 #include "dynamics/coords.h"
+#include "dynamics/weld.h"
 
 namespace walkers {
 
@@ -81,17 +82,6 @@ struct ContactLaws {
   FoundationLaw mesh_mesh;
   FoundationLaw mesh_knee;
   HertzLaw knee_ground;
-};
-
-// The weld that holds a planted foot (MODEL.md §3): an exact constraint on
-// the foot's centre and angle, as the authors' Simbody weld.
-struct WeldParameters {
-  // the authors' weld holds the foot point (0, -halfFootY + depth) at ground
-  // level: a planted foot sits this deep, its contact springs preloaded
-  double depth = 0.002;  // [m]
-  // Baumgarte's stabilisation: the constraint's error e obeys
-  // e'' + 2 a e' + a^2 e = 0, so integration drift decays in ~1/a
-  double stabilization = 100.0;  // [1/s] a
 };
 
 // Hunt–Crossley style joint limit: tau = -k x (1 + d x') past +-limit.

@@ -15,15 +15,4 @@ Observation Observe(const Model& model, const State& state) {
   o.max_penetration = MaxGroundPenetration(model, kin);
   return o;
 }
-
-Weld PlantFoot(const Model& model, const State& state, int leg) {
-  Kinematics kin;
-  ComputeKinematics(model, state.q, state.v, &kin);
-  Weld w;
-  w.active = true;
-  w.anchor = Vec2(kin.legs[leg].ankle.p.x(), model.body.half_foot_y - model.weld.depth);
-  w.angle = 0.0;
-  return w;
-}
-
 }  // namespace walkers

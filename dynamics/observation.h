@@ -4,6 +4,7 @@
 #include "dynamics/contact.h"
 #include "dynamics/coords.h"
 #include "dynamics/model.h"
+#include "dynamics/weld.h"
 
 namespace walkers {
 
@@ -15,8 +16,5 @@ struct Observation {
 };
 
 Observation Observe(const Model& model, const State& state);
-
-// A weld that plants a leg's foot where it is: centre at (x, half_foot_y), flat.
-Weld PlantFoot(const Model& model, const State& state, int leg);
 
 }  // namespace walkers

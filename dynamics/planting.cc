@@ -56,9 +56,9 @@ void Constraints(const Model& model, const Welds& welds, const FreeBodyVector& z
   for (int leg = 0; leg < kNumLegs; ++leg) {
     if (!welds[leg].active) continue;
     const int f = FootCoord(leg);
-    // the authors' weld holds the foot point (0, -halfFootY + depth) where it
-    // is when the foot's centre is at the anchor and its angle at the weld's
-    const Vec2 w(0.0, -b.half_foot_y + model.weld.depth);
+    // the welded point of the foot is held where it is when the foot's
+    // centre is at the anchor and its angle at the weld's
+    const Vec2 w = WeldedFootPoint(model);
     const double angle = z(f + 2), ca = std::cos(angle), sa = std::sin(angle);
     const double cw = std::cos(welds[leg].angle), sw = std::sin(welds[leg].angle);
     const Vec2 point = z.segment<2>(f) + Vec2(ca * w.x() - sa * w.y(), sa * w.x() + ca * w.y());

@@ -77,10 +77,11 @@ class TreeLdlt9 {
     for (int i = 0; i < kNumCoords; ++i) (*b)(kTreeOrder[i]) = y(i);
   }
 
-  // Solves M X = B in place for a 9x9 B, one row of B at a time (contiguous
-  // rows), with the same arithmetic per column as the vector solve.
-  void SolveInPlace(Mat9* B) const {
-    Eigen::Matrix<double, kNumCoords, kNumCoords, Eigen::RowMajor> Y;
+  // Solves M X = B in place for a 9 x Cols B, one row of B at a time
+  // (contiguous rows), with the same arithmetic per column as the vector solve.
+  template <int Cols>
+  void SolveInPlace(Eigen::Matrix<double, kNumCoords, Cols>* B) const {
+    Eigen::Matrix<double, kNumCoords, Cols, Cols == 1 ? Eigen::ColMajor : Eigen::RowMajor> Y;
     #pragma GCC unroll 9
     for (int i = 0; i < kNumCoords; ++i) Y.row(i) = B->row(kTreeOrder[i]);
     #pragma GCC unroll 9

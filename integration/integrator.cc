@@ -3,7 +3,6 @@
 #include "integration/block_matrix18.h"
 #include "integration/fixed_size_ops.h"
 #include "dynamics/jacobian.h"
-#include "dynamics/planting.h"
 #include "integration/schur_linear_solver.h"
 
 #include <cvode/cvode.h>
@@ -130,44 +129,32 @@ Integrator::Integrator(const Model& model, const IntegratorSettings& settings)
 Integrator::~Integrator() = default;
 
 void Integrator::Reset(double t0, const State& state, const Inputs& inputs) {
-  state_ = state;
   inputs_ = inputs;
   t_ = t0;
-  for (int i = 0; i < kNumCoords; ++i) {
-    if (model_.options.locked[i]) state_.v(i) = 0.0;
-  }
-  CopyStateToVector();
+  TakeState(state);
   Check(CVodeReInit(cv_->mem, t0, cv_->y), "CVodeReInit");
   finished_ = IntegratorStats{};
   rhs_evals_ = 0;
   needs_restart_ = false;
   non_finite_ = false;
-  pending_failure_.clear();
 }
 
-namespace {
-
-bool SameWeld(const Weld& a, const Weld& b) {
-  return a.active == b.active && (!a.active || (a.anchor == b.anchor && a.angle == b.angle));
+void Integrator::SetState(const State& state) {
+  TakeState(state);
+  needs_restart_ = true;
 }
 
-}  // namespace
+void Integrator::TakeState(const State& state) {
+  state_ = state;
+  for (int i = 0; i < kNumCoords; ++i) {
+    if (model_.options.locked[i]) state_.v(i) = 0.0;
+  }
+  CopyStateToVector();
+}
 
 void Integrator::SetInputs(const Inputs& inputs) {
-  bool welds_changed = false, weld_added = false;
-  for (int leg = 0; leg < kNumLegs; ++leg) {
-    if (SameWeld(inputs.welds[leg], inputs_.welds[leg])) continue;
-    welds_changed = true;
-    weld_added = weld_added || inputs.welds[leg].active;
-  }
-  // as the authors' program calls project() after enabling a weld: onto every active weld
-  if (weld_added && settings_.project_on_plant && !ProjectOntoWelds(model_, inputs.welds, &state_)) {
-    pending_failure_ = "projection onto the welds did not converge at t=" + std::to_string(t_);
-  }
-  if (welds_changed) {
-    // the state may have jumped: hand it to CVODE at the restart
-    CopyStateToVector();
-  }
+  bool welds_changed = false;
+  for (int leg = 0; leg < kNumLegs; ++leg) welds_changed = welds_changed || !SameWeld(inputs.welds[leg], inputs_.welds[leg]);
   const bool torques_changed = inputs.joint_torque != inputs_.joint_torque;
   inputs_ = inputs;
   if (welds_changed || (torques_changed && settings_.restart_on_torque_change)) needs_restart_ = true;
@@ -179,7 +166,11 @@ void Integrator::Restart() {
   const IntegratorStats s = stats();
   finished_ = s;
   finished_.restarts = s.restarts + 1;
+  double last_step = 0.0;
+  if (settings_.restart_with_last_step && s.steps > 0) CVodeGetLastStep(cv_->mem, &last_step);
   Check(CVodeReInit(cv_->mem, t_, cv_->y), "CVodeReInit");
+  // 0 lets CVODE estimate the first step
+  Check(CVodeSetInitStep(cv_->mem, last_step), "CVodeSetInitStep");
   needs_restart_ = false;
   restarted_since_inputs_changed_ = true;
 }
@@ -201,11 +192,6 @@ IntegratorStats Integrator::stats() const {
 
 IntegrationStatus Integrator::AdvanceTo(double t) {
   IntegrationStatus status;
-  if (!pending_failure_.empty()) {
-    status.failure = IntegrationFailure::kSolver;
-    status.reason = pending_failure_;
-    return status;
-  }
   if (!(t > t_)) return status;
 
   if (needs_restart_) Restart();

@@ -44,16 +44,15 @@ struct IntegratorSettings {
   // change of gamma, and at least every this many steps (CVODE's defaults).
   double newton_matrix_gamma_change = 0.3;
   long newton_matrix_max_age = 20;  // [steps]
-  // Restart CVODE (back to order 1) whenever the held joint torques change.
-  // AdvanceTo never steps past a point where they may change, and CVODE's
-  // error test usually copes with the jump more cheaply than a restart; when
-  // it does not (its history still holds the old accelerations), AdvanceTo
-  // restarts at the jump and tries again. Switching a weld always restarts.
-  bool restart_on_torque_change = false;
-  // Switching a weld on projects the state onto the active welds as the
-  // authors' program does (ProjectOntoWelds), instead of letting the stiff
-  // weld yank the foot into place.
-  bool project_on_plant = true;
+  // Restart CVODE (back to order 1) whenever the held joint torques change,
+  // that is at every controller tick: its history then never straddles a
+  // jump of the right-hand side, which costs fewer steps than letting the
+  // error test find the jump (docs/performance.md). Without it, when the error
+  // test cannot cope (its history still holds the old accelerations),
+  // AdvanceTo restarts at the jump and tries again. Switching a weld always restarts.
+  bool restart_on_torque_change = true;
+  // A restart begins with the step CVODE last took instead of its own estimate.
+  bool restart_with_last_step = false;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
   // (integration/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones
   // (the block Newton matrix has only its own fixed-size operations).
@@ -89,9 +88,12 @@ class Integrator {
   // Starts a new trajectory at (t0, state) holding `inputs`; clears the stats.
   void Reset(double t0, const State& state, const Inputs& inputs = {});
 
-  // Replaces the held inputs from the current time on. A weld switched on (or
-  // moved) projects the state onto it when settings.project_on_plant.
+  // Replaces the held inputs from the current time on.
   void SetInputs(const Inputs& inputs);
+
+  // Replaces the state at the current time (a jump, such as a projection onto
+  // the welds at planting): CVODE restarts from it.
+  void SetState(const State& state);
 
   // Integrates from the current time to t (> current time). On failure the
   // state is the last one CVODE reached and the status says why.
@@ -111,6 +113,8 @@ class Integrator {
   // false when they are not finite
   bool EvaluateJacobian(const double* y, Mat9* da_dq, Mat9* da_dv);
   void Restart();
+  // the state, with locked coordinates at rest, into CVODE's vector
+  void TakeState(const State& state);
   void CopyStateToVector();
   void CopyStateFromVector();
 
@@ -123,7 +127,6 @@ class Integrator {
   bool needs_restart_ = false;
   bool restarted_since_inputs_changed_ = true;  // a failure before a restart is retried once
   bool non_finite_ = false;
-  std::string pending_failure_;  // a failed projection, reported by the next AdvanceTo
   std::string last_cvode_message_;
   IntegratorStats finished_;  // stats of CVODE runs before the last restart
   long rhs_evals_ = 0;

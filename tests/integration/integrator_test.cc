@@ -229,13 +229,33 @@ TEST(IntegratorTest, CountsStepsAndRightHandSidesAcrossRestarts) {
   EXPECT_EQ(second.restarts, 1);
 }
 
+TEST(IntegratorTest, ANewStateIsTakenAtTheCurrentTimeWithARestart) {
+  const Model m = BuildModel(BodyOf(DefaultGenome()));
+  Integrator integrator(m);
+  const State start = StartState(m);
+  Inputs inputs;
+  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+  integrator.Reset(0.0, start, inputs);
+  ASSERT_TRUE(integrator.AdvanceTo(0.2).ok());
+  // a jump, as a projection at planting makes: the walker given a push
+  State pushed = integrator.state();
+  pushed.v(kX) += 0.5;
+  integrator.SetState(pushed);
+  EXPECT_EQ(integrator.state().v, pushed.v);
+  EXPECT_EQ(integrator.time(), 0.2);
+  ASSERT_TRUE(integrator.AdvanceTo(0.2 + 1e-9).ok());
+  EXPECT_EQ(integrator.stats().restarts, 1);
+  // CVODE went on from the new state, not from its old history
+  EXPECT_NEAR(integrator.state().v(kX), pushed.v(kX), 1e-5);
+}
+
 TEST(IntegratorTest, RestartsAndRetriesWhenATorqueJumpDefeatsCvodesHistory) {
   // tight tolerances and large torque jumps at every 30 Hz tick: without a
   // restart CVODE's error test cannot pass right after a jump, so AdvanceTo
   // must restart there and carry on
   const Model m = BuildModel(BodyOf(DefaultGenome()));
-  const IntegratorSettings settings = Tight();
-  ASSERT_FALSE(settings.restart_on_torque_change);
+  IntegratorSettings settings = Tight();
+  settings.restart_on_torque_change = false;
   Integrator integrator(m, settings);
   const State start = StartState(m);
   Inputs inputs;
