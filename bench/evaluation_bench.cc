@@ -1,7 +1,8 @@
 // One 15 s evaluation per genome of the benchmark set, the whole set under
 // each numerical variant, and one generation of 16 on 2 threads.
 //
-//   evaluation_bench --benchmark_filter=Genome       per genome, production settings
+//   evaluation_bench --benchmark_filter=Genome/bench     per genome of the benchmark set, production settings
+//   evaluation_bench --benchmark_filter=Genome/authors   per genome of the authors' final archives
 //   evaluation_bench --benchmark_filter=Variant      the choices of docs/performance.md
 //   evaluation_bench --benchmark_filter=Generation   16 children on 2 threads
 #include <benchmark/benchmark.h>
@@ -57,8 +58,11 @@ void Generation(benchmark::State& st) {
 }
 
 const bool kRegistered = [] {
-  for (const auto& [name, genome] : BenchmarkGenomes()) {
-    benchmark::RegisterBenchmark(("Genome/" + name).c_str(), EvaluateGenome, genome)->Unit(benchmark::kMillisecond);
+  for (const char* set : {"bench", "authors"}) {
+    for (const auto& [name, genome] : GenomeSet(set)) {
+      benchmark::RegisterBenchmark(("Genome/" + std::string(set) + "/" + name).c_str(), EvaluateGenome, genome)
+          ->Unit(benchmark::kMillisecond);
+    }
   }
   for (const Variant& v : Variants()) {
     // slow variants take seconds per set: a fixed small number of iterations
