@@ -1,8 +1,13 @@
 // walkers evaluate: one 15 s evaluation of a genome under the walking controller.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -12,7 +17,9 @@
 #include "control/accuracy.h"
 #include "control/evaluation.h"
 #include "control/genome.h"
+#include "control/step_profile.h"
 #include "dynamics/observation.h"
+#include "evolve/files.h"
 
 namespace walkers::app {
 namespace {
@@ -21,30 +28,57 @@ struct EvaluateOptions {
   std::string genome_path;
   std::string preset = "original";
   std::string trajectory_path;
+  std::string profile_path;          // per-tick step profile, CSV
+  std::string profile_summary_path;  // its totals per walking state, JSON
   bool json = false;
   int ensemble = 0;  // 0: no ensemble
   bool force = false;
 };
 
 int RunEvaluate(const EvaluateOptions& opt) {
-  if (!opt.trajectory_path.empty()) {
-    CheckOutputFile("--trajectory", opt.trajectory_path, opt.force, {{"--genome", opt.genome_path}});
+  const std::vector<std::pair<std::string, std::string>> outputs = {{"--trajectory", opt.trajectory_path},
+                                                                      {"--profile", opt.profile_path},
+                                                                      {"--profile-summary", opt.profile_summary_path}};
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].second.empty()) continue;
+    CheckOutputFile(outputs[i].first, outputs[i].second, opt.force, {{"--genome", opt.genome_path}});
+    for (size_t j = 0; j < i; ++j) {
+      const auto same = std::filesystem::path(outputs[i].second).lexically_normal() ==
+                        std::filesystem::path(outputs[j].second).lexically_normal();
+      if (same) throw std::invalid_argument(outputs[j].first + " and " + outputs[i].first + " name the same file");
+    }
   }
   const Genome genome = LoadGenome(opt.genome_path);
   const Preset preset = PresetByName(opt.preset);
+  const Model model = BuildModel(BodyOf(genome));
 
   std::optional<TrajectoryCsv> csv;
+  if (!opt.trajectory_path.empty()) csv.emplace(opt.trajectory_path, true);
+  std::optional<StepProfile> profile;
+  if (!opt.profile_path.empty() || !opt.profile_summary_path.empty()) profile.emplace(model);
   TickObserver observer;
-  if (!opt.trajectory_path.empty()) {
-    csv.emplace(opt.trajectory_path, true);
-    const Model model = BuildModel(BodyOf(genome));
-    observer = [&csv, model](double t, const State& state, const WalkingController& controller) {
-      csv->Write(t, state, Observe(model, state), WalkingStateName(controller.state()),
-                 controller.x_target());
+  StepObserver step_observer;
+  if (csv || profile) {
+    observer = [&csv, &profile, &model](double t, const State& state, const WalkingController& controller) {
+      if (csv) {
+        csv->Write(t, state, Observe(model, state), WalkingStateName(controller.state()), controller.x_target());
+      }
+      if (profile) profile->OnTick(t, state, controller);
     };
   }
-  const EvaluationResult r = Evaluate(genome, preset, {}, observer);
+  if (profile) step_observer = [&profile](const StepInfo& step) { profile->OnStep(step); };
+  const EvaluationResult r = Evaluate(genome, preset, {}, observer, step_observer);
   if (csv) csv->Close();
+  if (!opt.profile_path.empty()) {
+    AtomicFileWriter file(opt.profile_path, "the profile file");
+    profile->WriteCsv(file.stream());
+    file.Commit();
+  }
+  if (!opt.profile_summary_path.empty()) {
+    AtomicFileWriter file(opt.profile_summary_path, "the profile summary");
+    file.stream() << profile->Summary().dump(2) << "\n";
+    file.Commit();
+  }
   const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, opt.ensemble, &r);
 
   if (opt.json) {
@@ -95,7 +129,12 @@ void AddEvaluateCommand(CLI::App& app, Command* selected) {
   sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--trajectory", opt->trajectory_path, "Write the trajectory as CSV, one row per 1/30 s");
-  AddForceOption(sub, &opt->force, "the --trajectory file");
+  sub->add_option("--profile", opt->profile_path,
+                  "Write CVODE's steps as CSV, one row per 1/30 s tick: steps, failures, sizes, the limiting "
+                  "state components, contact and joint-stop switches (docs/step_profile.md)");
+  sub->add_option("--profile-summary", opt->profile_summary_path,
+                  "Write the step profile's totals per walking state as JSON (docs/step_profile.md)");
+  AddForceOption(sub, &opt->force, "the --trajectory and profile files");
   sub->add_flag("--json", opt->json, "Print one JSON object instead of a summary");
   sub->add_option("--ensemble", opt->ensemble,
                   "Also evaluate N times with the relative tolerance scaled by 1 + k 1e-4 and report the "

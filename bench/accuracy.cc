@@ -157,8 +157,8 @@ int Run(const Options& opt) {
   std::printf("settings: %s (rtol %g, atol_q %g, atol_v %g), tight: 100x; ensembles of %d\n",
               opt.settings_name.c_str(), s.relative_tolerance, s.absolute_tolerance_position,
               s.absolute_tolerance_velocity, opt.ensemble);
-  std::printf("%-32s %26s %26s %8s %8s %5s %5s %5s %9s %9s\n", "genome", "median [IQR]", "tight: median [IQR]",
-              "rel.diff", "regular", "gait", "fall", "pass", "steps", "ms");
+  std::printf("%-32s %26s %26s %8s %8s %5s %5s %9s %5s %9s %9s\n", "genome", "median [IQR]",
+              "tight: median [IQR]", "rel.diff", "regular", "gait", "fall", "walker", "pass", "steps", "ms");
   nlohmann::json out = {{"settings", opt.settings_name},
                         {"relative_tolerance", s.relative_tolerance},
                         {"absolute_tolerance_position", s.absolute_tolerance_position},
@@ -175,16 +175,19 @@ int Run(const Options& opt) {
     const std::string name = std::filesystem::path(opt.genomes[i]).stem().string();
     steps.push_back(Median(production[i].cvode_steps));
     ms.push_back(Median(production[i].wall_ms));
-    std::printf("%-32s %8.3f [%7.3f, %7.3f] %8.3f [%7.3f, %7.3f] %7.2f%% %8s %5s %5s %5s %9.0f %9.1f\n", name.c_str(),
-                a.Median(), a.LowerQuartile(), a.UpperQuartile(), b.Median(), b.LowerQuartile(), b.UpperQuartile(),
-                100.0 * v.median_difference, v.regular ? "yes" : "no", v.gait_agrees ? "yes" : "NO",
-                v.fall_agrees ? "yes" : "NO", v.passes() ? "yes" : "NO", steps.back(), ms.back());
+    std::printf("%-32s %8.3f [%7.3f, %7.3f] %8.3f [%7.3f, %7.3f] %7.2f%% %8s %5s %5s %9s %5s %9.0f %9.1f\n",
+                name.c_str(), a.Median(), a.LowerQuartile(), a.UpperQuartile(), b.Median(), b.LowerQuartile(),
+                b.UpperQuartile(), 100.0 * v.median_difference, v.regular ? "yes" : "no", v.gait_agrees ? "yes" : "NO",
+                v.fall_agrees ? "yes" : "NO", v.lost_walker ? "LOST" : v.numerical_walker ? "NUMERICAL" : "kept",
+                v.passes() ? "yes" : "NO", steps.back(), ms.back());
     out["genomes"].push_back({{"genome", name},
                               {"file", opt.genomes[i]},
                               {"production", ToJson(production[i])},
                               {"tight", ToJson(tighter[i])},
                               {"regular", v.regular},
                               {"median_difference", v.median_difference},
+                              {"lost_walker", v.lost_walker},
+                              {"numerical_walker", v.numerical_walker},
                               {"passes", v.passes()}});
   }
   std::printf("%zu genomes: %d fail (medians and IQR; scripts/accuracy.py adds the KS test); median over the set "

@@ -46,6 +46,14 @@ AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEn
   v.gait_agrees = majority(production.bipeds, production) == majority(tight.bipeds, tight) &&
                   majority(production.tripods, production) == majority(tight.tripods, tight);
   v.fall_agrees = majority(production.falls, production) == majority(tight.falls, tight);
+  // a walk made or broken by the integration error
+  const auto members = [](const FitnessEnsemble& e, auto&& in) {
+    return static_cast<int>(std::count_if(e.fitness.begin(), e.fitness.end(), in));
+  };
+  const int production_stalled = members(production, [](double f) { return f <= kNonWalkerFitness; });
+  const int production_walking = members(production, [](double f) { return f >= kWalkerFitness; });
+  v.lost_walker = tight_median >= kWalkerFitness && majority(production_stalled, production);
+  v.numerical_walker = tight_median <= kNonWalkerFitness && majority(production_walking, production);
   return v;
 }
 

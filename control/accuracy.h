@@ -54,14 +54,23 @@ struct FitnessEnsemble {
 // irregular one's production median must lie inside the tight ensemble's
 // interquartile range (the criterion also accepts a two-sample
 // Kolmogorov-Smirnov p > 0.05 instead, which scripts/accuracy.py computes);
-// and the majority's gait class and fall verdict must agree.
+// and the majority's gait class and fall verdict must agree. Two more rules
+// catch a walk that the integration error makes or breaks: no lost walker (a
+// genome whose tight median is a walker's, >= kWalkerFitness, must not have
+// a production majority, more than half its members, <= kNonWalkerFitness)
+// and no numerical walker (the reverse: a production majority >=
+// kWalkerFitness while the tight median is <= kNonWalkerFitness).
+constexpr double kWalkerFitness = 5.0;     // [leg lengths] a walker's fitness, at least
+constexpr double kNonWalkerFitness = 1.0;  // [leg lengths] a walker that went nowhere, at most
 struct AccuracyVerdict {
   bool regular = false;
   double median_difference = 0;  // RelativeFitnessDifference of the medians
   bool fitness_agrees = false;   // regular: medians within 1 %; irregular: median inside the tight IQR
   bool gait_agrees = false;
   bool fall_agrees = false;
-  bool passes() const { return fitness_agrees && gait_agrees && fall_agrees; }
+  bool lost_walker = false;       // the tight ensemble walks, production's majority does not
+  bool numerical_walker = false;  // production's majority walks, the tight ensemble does not
+  bool passes() const { return fitness_agrees && gait_agrees && fall_agrees && !lost_walker && !numerical_walker; }
 };
 AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEnsemble& tight);
 

@@ -24,13 +24,14 @@ const char* GaitName(Gait gait) {
 }
 
 EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
-                          const TickObserver& observer) {
+                          const TickObserver& observer, const StepObserver& step_observer) {
   const auto wall_start = std::chrono::steady_clock::now();
   const Model model = BuildModel(BodyOf(genome), ModelOptions{}, settings.contact, settings.weld);
   const State start = StartState(model);
 
   WalkingController controller(genome, model, preset);
   Integrator integrator(model, settings.integrator);
+  if (step_observer) integrator.SetStepObserver(step_observer);
   // both feet welded at x = 0: on that tie the left foot swings first
   integrator.Reset(0.0, start, controller.Start(StartWelds(model)));
 

@@ -56,7 +56,9 @@ struct EvaluationResult {
 // the end, with the time, the walker's state and the controller.
 using TickObserver = std::function<void(double t, const State& state, const WalkingController& controller)>;
 
+// A step observer (integration/integrator.h) sees every CVODE step; the
+// results stay bit-identical.
 EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const EvaluationSettings& settings = {},
-                          const TickObserver& observer = nullptr);
+                          const TickObserver& observer = nullptr, const StepObserver& step_observer = nullptr);
 
 }  // namespace walkers

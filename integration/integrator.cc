@@ -12,7 +12,9 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace walkers {
 
@@ -34,6 +36,17 @@ struct Integrator::Cvode {
     if (abs_tol) N_VDestroy(abs_tol);
     if (y) N_VDestroy(y);
     if (context) SUNContext_Free(&context);
+  }
+};
+
+struct Integrator::StepProbe {
+  StepObserver observer;
+  N_Vector weights = nullptr;  // CVODE's error weights
+  N_Vector errors = nullptr;   // its estimated local errors
+
+  ~StepProbe() {
+    if (errors) N_VDestroy(errors);
+    if (weights) N_VDestroy(weights);
   }
 };
 
@@ -209,7 +222,7 @@ IntegrationStatus Integrator::AdvanceTo(double t) {
   CVodeSetStopTime(cv_->mem, t);
 
   double t_reached = t_;
-  int flag = CVode(cv_->mem, t, cv_->y, &t_reached, CV_NORMAL);
+  int flag = RunCvode(t, &t_reached);
   t_ = t_reached;
   CopyStateFromVector();
 
@@ -222,7 +235,7 @@ IntegrationStatus Integrator::AdvanceTo(double t) {
     Restart();
     CVodeSetMaxNumSteps(cv_->mem, std::max(1L, settings_.step_budget - stats().steps));
     CVodeSetStopTime(cv_->mem, t);
-    flag = CVode(cv_->mem, t, cv_->y, &t_reached, CV_NORMAL);
+    flag = RunCvode(t, &t_reached);
     t_ = t_reached;
     CopyStateFromVector();
   }
@@ -242,6 +255,58 @@ IntegrationStatus Integrator::AdvanceTo(double t) {
     if (!last_cvode_message_.empty()) status.reason += ": " + last_cvode_message_;
   }
   return status;
+}
+
+void Integrator::SetStepObserver(StepObserver observer) {
+  if (!observer) {
+    probe_.reset();
+    return;
+  }
+  if (!probe_) {
+    probe_ = std::make_unique<StepProbe>();
+    probe_->weights = N_VClone(cv_->y);
+    probe_->errors = N_VClone(cv_->y);
+    if (!probe_->weights || !probe_->errors) throw std::runtime_error("CVODE setup failed: N_VClone");
+  }
+  probe_->observer = std::move(observer);
+}
+
+int Integrator::RunCvode(double t, double* t_reached) {
+  if (!probe_) return CVode(cv_->mem, t, cv_->y, t_reached, CV_NORMAL);
+
+  // CV_ONE_STEP under the stop time t takes the steps CV_NORMAL takes (the
+  // stop time, not tout, ends both) and hands back the same state at t; the
+  // step budget that CVodeSetMaxNumSteps gives CV_NORMAL is counted here
+  const long max_steps = std::max(1L, settings_.step_budget - stats().steps);
+  for (long taken = 0; taken < max_steps; ++taken) {
+    long error_tests_before = 0, nonlinear_before = 0;
+    CVodeGetNumErrTestFails(cv_->mem, &error_tests_before);
+    CVodeGetNumNonlinSolvConvFails(cv_->mem, &nonlinear_before);
+    const int flag = CVode(cv_->mem, t, cv_->y, t_reached, CV_ONE_STEP);
+    if (flag < 0) return flag;
+
+    StepInfo info;
+    info.t = *t_reached;
+    CVodeGetLastStep(cv_->mem, &info.step);
+    CVodeGetLastOrder(cv_->mem, &info.order);
+    CVodeGetNumErrTestFails(cv_->mem, &info.error_test_failures);
+    CVodeGetNumNonlinSolvConvFails(cv_->mem, &info.nonlinear_failures);
+    info.error_test_failures -= error_tests_before;
+    info.nonlinear_failures -= nonlinear_before;
+    CVodeGetErrWeights(cv_->mem, probe_->weights);
+    CVodeGetEstLocalErrors(cv_->mem, probe_->errors);
+    const double* w = N_VGetArrayPointer(probe_->weights);
+    const double* e = N_VGetArrayPointer(probe_->errors);
+    for (int i = 0; i < kStateSize; ++i) info.weighted_error(i) = std::abs(e[i] * w[i]);
+    t_ = *t_reached;
+    CopyStateFromVector();
+    info.state = &state_;
+    info.inputs = &inputs_;
+    probe_->observer(info);
+
+    if (flag == CV_TSTOP_RETURN || !(*t_reached < t)) return CV_SUCCESS;
+  }
+  return CV_TOO_MUCH_WORK;
 }
 
 void Integrator::CopyStateToVector() {

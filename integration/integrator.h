@@ -3,6 +3,7 @@
 // memory and shares nothing, so many run at once on different threads.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -78,6 +79,23 @@ struct IntegrationStatus {
   bool ok() const { return failure == IntegrationFailure::kNone; }
 };
 
+// One step CVODE accepted, as a step observer sees it (Integrator::SetStepObserver).
+struct StepInfo {
+  double t = 0;     // [s] where the step ended
+  double step = 0;  // [s] its size
+  int order = 0;    // of the method that took it
+  // attempts rejected on the way to it: by the local error test, and by the
+  // Newton iteration failing to converge
+  long error_test_failures = 0;
+  long nonlinear_failures = 0;
+  // each component's estimated local error times its error weight, y = (q, v):
+  // the largest is the component that limits the step size
+  Eigen::Matrix<double, 2 * kNumCoords, 1> weighted_error = Eigen::Matrix<double, 2 * kNumCoords, 1>::Zero();
+  const State* state = nullptr;    // at t
+  const Inputs* inputs = nullptr;  // held during the step
+};
+using StepObserver = std::function<void(const StepInfo&)>;
+
 class Integrator {
  public:
   explicit Integrator(const Model& model, const IntegratorSettings& settings = {});
@@ -104,6 +122,11 @@ class Integrator {
   const Inputs& inputs() const { return inputs_; }
   const Model& model() const { return model_; }
   IntegratorStats stats() const;
+
+  // Calls `observer` after every step CVODE accepts (none: nullptr). CVODE
+  // then goes one step at a time up to the same stop time: the same steps as
+  // without an observer, so the results are bit-identical, only slower.
+  void SetStepObserver(StepObserver observer);
 
  private:
   friend struct CvodeCallbacks;
@@ -133,6 +156,12 @@ class Integrator {
 
   struct Cvode;  // SUNDIALS handles
   std::unique_ptr<Cvode> cv_;
+
+  // CVODE to the stop time t, in one call or, with a step observer, one step
+  // at a time, within the step budget. Returns CVODE's flag.
+  int RunCvode(double t, double* t_reached);
+  struct StepProbe;  // the step observer and its vectors
+  std::unique_ptr<StepProbe> probe_;
 };
 
 }  // namespace walkers

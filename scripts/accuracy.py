@@ -8,7 +8,10 @@ production settings and one at 100x tighter tolerances) and judges each genome:
   median is smaller than 1); then the two medians must agree within 1 %;
 - otherwise the two ensembles must not be distinguishable: a two-sample Kolmogorov-Smirnov
   test (SciPy) with p > 0.05, or the production median inside the tight interquartile range;
-- and always: the majority's gait class and fall verdict agree.
+- and always: the majority's gait class and fall verdict agree;
+- no lost walker: a genome whose tight median is >= 5 (a walker) must not have a production
+  majority (more than half its members) <= 1 (a walker that went nowhere);
+- no numerical walker: nor a production majority >= 5 while the tight median is <= 1.
 
   accuracy.py FILE.json [--markdown OUT]
 
@@ -27,6 +30,8 @@ from scipy import stats
 REGULAR_IQR = 0.02  # of the tight median
 REGULAR_MEDIANS = 0.01  # relative
 KS_ALPHA = 0.05
+WALKER = 5.0  # a walker's fitness, at least (control/accuracy.h kWalkerFitness)
+NON_WALKER = 1.0  # a walker that went nowhere, at most (kNonWalkerFitness)
 
 
 def relative_difference(value, reference):
@@ -71,8 +76,12 @@ def judge(genome):
         majority(production[k], len(a)) == majority(tight[k], len(b)) for k in ("bipeds", "tripods")
     )
     fall = majority(production["falls"], len(a)) == majority(tight["falls"], len(b))
+    # a walk made or broken by the integration error
+    lost = tight_median >= WALKER and majority(sum(f <= NON_WALKER for f in a), len(a))
+    numerical = tight_median <= NON_WALKER and majority(sum(f >= WALKER for f in a), len(a))
     verdict.update(fitness_agrees=fitness_agrees, gait_agrees=gait, fall_agrees=fall,
-                   passes=fitness_agrees and gait and fall,
+                   lost_walker=lost, numerical_walker=numerical,
+                   passes=fitness_agrees and gait and fall and not lost and not numerical,
                    steps_median=production.get("steps_median"), wall_ms_median=production.get("wall_ms_median"))
     return verdict
 
@@ -83,8 +92,9 @@ def markdown(data, verdicts):
         f"{data['absolute_tolerance_position']:g}, atol_v {data['absolute_tolerance_velocity']:g}); "
         f"ensembles of {data['ensemble']} against 100x tighter tolerances.",
         "",
-        "| genome | median | tight: median [IQR] | regular | medians differ | KS p | gait, fall | passes | steps | ms |",
-        "|---|---|---|---|---|---|---|---|---|---|",
+        "| genome | median | tight: median [IQR] | regular | medians differ | KS p | gait, fall | walker | passes "
+        "| steps | ms |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for v in verdicts:
         ks = "—" if v["ks_p"] is None else f"{v['ks_p']:.3f}"
@@ -92,6 +102,7 @@ def markdown(data, verdicts):
             f"| {v['genome']} | {v['median']:.3f} | {v['tight_median']:.3f} [{v['tight_iqr'][0]:.3f}, "
             f"{v['tight_iqr'][1]:.3f}] | {'yes' if v['regular'] else 'no'} | {100 * v['median_difference']:.2f} % | "
             f"{ks} | {'agree' if v['gait_agrees'] and v['fall_agrees'] else 'DIFFER'} | "
+            f"{'LOST' if v['lost_walker'] else 'NUMERICAL' if v['numerical_walker'] else 'kept'} | "
             f"{'yes' if v['passes'] else '**no**'} | {v['steps_median']:.0f} | {v['wall_ms_median']:.1f} |")
     passed = sum(v["passes"] for v in verdicts)
     lines += ["", f"{passed} of {len(verdicts)} genomes pass; median {statistics.median(v['steps_median'] for v in verdicts):.0f} "

@@ -46,6 +46,17 @@ header=$(head -1 "$tmp/e.csv")
 grep -q ',DS,' "$tmp/e.csv" && grep -Eq ',(LS|RS),' "$tmp/e.csv" ||
   { echo "FAIL: evaluate trajectory has no DS and LS/RS states"; failures=$((failures + 1)); }
 expect 0 '^fitness [-0-9.]+ +\(distance' -- evaluate --genome "$genome" --preset paper
+# evaluate --profile: a row per tick, the same evaluation as without it; its summary per walking state
+plain=$("$walkers" evaluate --genome "$genome" --json | sed 's/"wall_ms":[^}]*//')
+profiled=$("$walkers" evaluate --genome "$genome" --json --profile "$tmp/p.csv" --profile-summary "$tmp/p.json" |
+  sed 's/"wall_ms":[^}]*//')
+[[ $plain == "$profiled" ]] || fail "profiling changed the evaluation: $plain / $profiled"
+[[ $(head -1 "$tmp/p.csv") == t,state,steps,error_test_failures,nonlinear_failures,*,switch_stop_ankle_r ]] ||
+  fail "profile header: $(head -1 "$tmp/p.csv")"
+[[ $(($(wc -l <"$tmp/p.csv") - 1)) -eq 450 ]] || fail "profile: 15 s at 30 Hz should give 450 rows"
+grep -q '"DS": {' "$tmp/p.json" && grep -q '"limiting": {' "$tmp/p.json" || fail "profile summary: $(head -c 200 "$tmp/p.json")"
+expect nonzero '--profile and --profile-summary name the same file' -- \
+  evaluate --genome "$genome" --profile "$tmp/same" --profile-summary "$tmp/same"
 # evaluate --ensemble: the spread under perturbations of the relative tolerance
 expect 0 '"ensemble":\{"bipeds":[0-9]+,"falls":[0-9]+,"fitness":\[[-0-9.e]+,[-0-9.e]+,[-0-9.e]+\],"fitness_max":' -- \
   evaluate --genome "$genome" --ensemble 3 --json

@@ -59,6 +59,48 @@ TEST(AccuracyTest, TheCriterionJudgesRegularAndIrregularWalkers) {
   EXPECT_FALSE(JudgeAccuracy(production, tight).fall_agrees);
 }
 
+// A walk made or broken by the integration error fails even where the
+// median's place in the tight interquartile range would let it pass.
+TEST(AccuracyTest, TheCriterionFindsLostAndNumericalWalkers) {
+  FitnessEnsemble tight, production;
+  tight.bipeds = production.bipeds = 5;
+  // the tight ensemble walks (median 6); production stalls in 3 of 5
+  tight.fitness = {0.5, 0.8, 6.0, 7.0, 8.0};  // quartiles 0.8 and 7
+  production.fitness = {0.5, 0.6, 0.9, 7.0, 8.0};
+  AccuracyVerdict v = JudgeAccuracy(production, tight);
+  EXPECT_TRUE(v.fitness_agrees);  // median 0.9 inside [0.8, 7]
+  EXPECT_TRUE(v.lost_walker);
+  EXPECT_FALSE(v.numerical_walker);
+  EXPECT_FALSE(v.passes());
+  production.fitness = {0.5, 0.6, 6.0, 7.0, 8.0};  // 2 of 5 stall: no majority
+  v = JudgeAccuracy(production, tight);
+  EXPECT_FALSE(v.lost_walker);
+  EXPECT_TRUE(v.passes());
+  production.fitness = {0.5, 1.0, 7.0, 8.0};  // half is no majority; 1.0 counts as stalled
+  EXPECT_FALSE(JudgeAccuracy(production, tight).lost_walker);
+  production.fitness = {0.5, 1.0, 1.0, 8.0};
+  EXPECT_TRUE(JudgeAccuracy(production, tight).lost_walker);
+
+  // the reverse: the tight ensemble stalls (median 0.7), production walks in 4 of 5
+  tight.fitness = {0.5, 0.6, 0.7, 6.0, 7.0};  // quartiles 0.6 and 6
+  production.fitness = {0.5, 5.5, 6.0, 6.5, 7.0};
+  v = JudgeAccuracy(production, tight);
+  EXPECT_TRUE(v.fitness_agrees);  // median 6 inside [0.6, 6]
+  EXPECT_TRUE(v.numerical_walker);
+  EXPECT_FALSE(v.lost_walker);
+  EXPECT_FALSE(v.passes());
+  production.fitness = {0.5, 0.6, 4.9, 6.5, 7.0};  // 4.9 is no walker: 2 of 5
+  v = JudgeAccuracy(production, tight);
+  EXPECT_FALSE(v.numerical_walker);
+  EXPECT_TRUE(v.passes());
+  // a tight median between the two thresholds is neither
+  tight.fitness = {2.0, 3.0, 3.0, 3.0, 4.0};
+  production.fitness = {0.0, 0.0, 0.0, 9.0, 9.0};
+  v = JudgeAccuracy(production, tight);
+  EXPECT_FALSE(v.lost_walker);
+  EXPECT_FALSE(v.numerical_walker);
+}
+
 TEST(AccuracyTest, QuantilesInterpolateBetweenOrderStatistics) {
   EXPECT_EQ(Quantile({}, 0.5), 0.0);
   EXPECT_EQ(Quantile({4.0, 1.0, 3.0, 2.0}, 0.25), 1.75);

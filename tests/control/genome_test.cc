@@ -131,5 +131,16 @@ TEST_F(GenomeFileTest, RejectsFilesThatAreNotGenomes) {
   EXPECT_NE(LoadError((root_ / "absent.json").string()).find("cannot open"), std::string::npos);
 }
 
+// every genome the repository keeps (benchmark, authors', sampled) is a valid genome file
+TEST(GenomeTest, EveryStoredGenomeLoads) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(DataPath("data/genomes"))) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    EXPECT_NO_THROW(LoadGenome(entry.path().string())) << entry.path();
+  }
+  EXPECT_GE(files, 9 + 36 + 66);
+}
+
 }  // namespace
 }  // namespace walkers

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -269,6 +270,80 @@ TEST(IntegratorTest, RestartsAndRetriesWhenATorqueJumpDefeatsCvodesHistory) {
   }
   EXPECT_GE(integrator.stats().restarts, 1);
   EXPECT_NEAR(integrator.time(), 1.0, 1e-12);
+}
+
+// A step observer makes CVODE go one step at a time under the same stop
+// times: the same steps, so the same bits, across weld switches (restarts)
+// and torque jumps; it sees every step, with its failures, once.
+TEST(IntegratorTest, AStepObserverSeesEveryStepAndChangesNoBit) {
+  const Model m = BuildModel(BodyOf(DefaultGenome()));
+  const State start = StartState(m);
+  struct Run {
+    State state;
+    IntegratorStats stats;
+    std::vector<StepInfo> steps;
+  };
+  const auto run = [&](bool observe) {
+    Run out;
+    Integrator integrator(m);
+    if (observe) integrator.SetStepObserver([&](const StepInfo& step) { out.steps.push_back(step); });
+    Inputs inputs;
+    for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+    integrator.Reset(0.0, start, inputs);
+    for (int tick = 0; tick < 30; ++tick) {
+      if (tick == 10) inputs.welds[kLeft].active = false;  // a restart
+      inputs.joint_torque(kHipR) = tick % 2 ? 40.0 : -40.0;
+      integrator.SetInputs(inputs);
+      EXPECT_TRUE(integrator.AdvanceTo((tick + 1) / kControlRate).ok()) << "tick " << tick;
+    }
+    out.state = integrator.state();
+    out.stats = integrator.stats();
+    return out;
+  };
+  const Run plain = run(false), observed = run(true);
+  EXPECT_EQ(plain.state.q, observed.state.q);
+  EXPECT_EQ(plain.state.v, observed.state.v);
+  EXPECT_EQ(plain.stats.steps, observed.stats.steps);
+  EXPECT_EQ(plain.stats.rhs_evals, observed.stats.rhs_evals);
+  EXPECT_EQ(plain.stats.error_test_failures, observed.stats.error_test_failures);
+  EXPECT_EQ(plain.stats.nonlinear_failures, observed.stats.nonlinear_failures);
+  EXPECT_EQ(plain.stats.restarts, observed.stats.restarts);
+  EXPECT_TRUE(plain.steps.empty());
+
+  ASSERT_EQ(static_cast<long>(observed.steps.size()), observed.stats.steps);
+  long error_tests = 0, nonlinear = 0;
+  double t = 0.0;
+  for (const StepInfo& step : observed.steps) {
+    EXPECT_GT(step.t, t);
+    EXPECT_NEAR(step.t - t, step.step, 1e-12);  // each step starts where the last ended
+    t = step.t;
+    EXPECT_GE(step.order, 1);
+    EXPECT_LE(step.order, 5);
+    EXPECT_GT(step.weighted_error.maxCoeff(), 0.0);
+    error_tests += step.error_test_failures;
+    nonlinear += step.nonlinear_failures;
+  }
+  EXPECT_EQ(error_tests, observed.stats.error_test_failures);
+  EXPECT_EQ(nonlinear, observed.stats.nonlinear_failures);
+  EXPECT_NEAR(t, 1.0, 1e-12);
+}
+
+TEST(IntegratorTest, AStepObserverKeepsTheStepBudget) {
+  const Model m = BuildModel(BodyOf(DefaultGenome()));
+  IntegratorSettings settings;
+  settings.step_budget = 50;
+  long observed = 0;
+  Integrator plain(m, settings), stepped(m, settings);
+  stepped.SetStepObserver([&](const StepInfo&) { ++observed; });
+  plain.Reset(0.0, StartState(m));
+  stepped.Reset(0.0, StartState(m));
+  const IntegrationStatus a = plain.AdvanceTo(2.0), b = stepped.AdvanceTo(2.0);
+  EXPECT_EQ(b.failure, IntegrationFailure::kStepBudget);
+  EXPECT_EQ(a.reason, b.reason);
+  EXPECT_EQ(plain.time(), stepped.time());
+  EXPECT_EQ(plain.state().q, stepped.state().q);
+  EXPECT_EQ(observed, 50);
+  EXPECT_EQ(stepped.stats().steps, 50);
 }
 
 TEST(IntegratorTest, IsDeterministic) {

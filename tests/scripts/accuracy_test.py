@@ -66,6 +66,35 @@ class Criterion(unittest.TestCase):
         self.assertFalse(accuracy.judge(genome(ensemble(walk, falls=2), ensemble(walk)))["passes"])
         self.assertTrue(accuracy.judge(genome(ensemble(walk, falls=1), ensemble(walk)))["passes"])
 
+    def test_no_lost_walkers(self):
+        # the tight ensemble walks (median 6); production stalls in 3 of 5, though its median
+        # 0.9 lies inside the tight interquartile range [0.8, 7]
+        tight = ensemble([0.5, 0.8, 6.0, 7.0, 8.0])
+        lost = accuracy.judge(genome(ensemble([0.5, 0.6, 0.9, 7.0, 8.0]), tight))
+        self.assertTrue(lost["fitness_agrees"])
+        self.assertTrue(lost["lost_walker"])
+        self.assertFalse(lost["passes"])
+        kept = accuracy.judge(genome(ensemble([0.5, 0.6, 6.0, 7.0, 8.0]), tight))  # 2 of 5: no majority
+        self.assertFalse(kept["lost_walker"])
+        self.assertTrue(kept["passes"])
+        self.assertFalse(accuracy.judge(genome(ensemble([0.5, 1.0, 7.0, 8.0]), tight))["lost_walker"])  # half
+        self.assertTrue(accuracy.judge(genome(ensemble([0.5, 1.0, 1.0, 8.0]), tight))["lost_walker"])
+
+    def test_no_numerical_walkers(self):
+        # the tight ensemble stalls (median 0.7); production walks in 4 of 5, its median 6 inside
+        # the tight interquartile range [0.6, 6]
+        tight = ensemble([0.5, 0.6, 0.7, 6.0, 7.0])
+        made = accuracy.judge(genome(ensemble([0.5, 5.5, 6.0, 6.5, 7.0]), tight))
+        self.assertTrue(made["fitness_agrees"])
+        self.assertTrue(made["numerical_walker"])
+        self.assertFalse(made["lost_walker"])
+        self.assertFalse(made["passes"])
+        kept = accuracy.judge(genome(ensemble([0.5, 0.6, 4.9, 6.5, 7.0]), tight))  # 4.9 is no walker
+        self.assertFalse(kept["numerical_walker"])
+        self.assertTrue(kept["passes"])
+        between = accuracy.judge(genome(ensemble([0.0, 0.0, 0.0, 9.0, 9.0]), ensemble([2.0, 3.0, 3.0, 3.0, 4.0])))
+        self.assertFalse(between["lost_walker"] or between["numerical_walker"])
+
     def test_command_line_exit_status_and_bad_input(self):
         good = genome(ensemble([1.0, 1.0]), ensemble([1.0, 1.0]), "good")
         bad = genome(ensemble([3.0, 3.0]), ensemble([1.0, 1.0]), "bad")
