@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <optional>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -211,6 +211,24 @@ TEST_F(ReproductionTest, RunsSideBySideWriteTheSameFilesAsOneAtATime) {
     EXPECT_EQ(text, side.at(name)) << name;
   }
   EXPECT_GE(one.size(), 6u * 5 + 3);
+}
+
+TEST_F(ReproductionTest, GrowsByResumingWithMoreReplicates) {
+  ReproductionConfig c = Tiny();
+  Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2), {}, 2);
+  const auto first = RunFilesWithoutTiming(Dir("r") + "/time-1");
+  c.replicates = 2;
+  std::vector<std::string> started;
+  ReproductionObserver observer;
+  observer.on_run_start = [&](const PlannedRun& run, int completed) {
+    if (completed == 0) started.push_back(run.name);
+  };
+  Reproduction(c, Dir("r"), StartMode::kResume).Run(Threads(2), observer, 3);
+  std::sort(started.begin(), started.end());
+  EXPECT_EQ(started, (std::vector<std::string>{"free-2", "performance-2", "time-2"}));
+  EXPECT_EQ(RunFilesWithoutTiming(Dir("r") + "/time-1"), first);
+  const auto summary = nlohmann::json::parse(ReadFile(Dir("r") + "/summary.json"));
+  EXPECT_EQ(summary.at("runs").size(), 6u);
 }
 
 }  // namespace
