@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/evaluators.h"
 #include "app/validators.h"
 #include "app/progress.h"
 #include "evolve/run.h"
@@ -17,7 +18,7 @@ struct EvolveOptions {
   std::string preset = "original";
   int generations = 4000;
   std::uint64_t seed = 1;
-  int threads = 0;
+  EvaluatorOptions evaluator;
   std::string out;
   StartFlags start;
   GeneticAlgorithmConfig ga;
@@ -33,8 +34,8 @@ int RunEvolve(const EvolveOptions& opt) {
   config.ga = opt.ga;
   config.Validate();
 
-  const int threads = ThreadsOrAllCores(opt.threads);
-  EvolutionRun run(config, opt.out, opt.start.mode(), threads);
+  const std::unique_ptr<Evaluator> evaluator = MakeEvaluator(opt.evaluator);
+  EvolutionRun run(config, opt.out, opt.start.mode(), *evaluator);
   if (run.completed_generations() > 0) {
     std::fprintf(stderr, "resuming %s after generation %d\n", opt.out.c_str(), run.completed_generations());
   }
@@ -67,7 +68,7 @@ void AddEvolveCommand(CLI::App& app, Command* selected) {
       ->check(IntegerRange(1, kMaxGenerations))
       ->capture_default_str();
   AddSeedOption(sub, &opt->seed, "Random seed of the run");
-  AddThreadsOption(sub, &opt->threads);
+  AddEvaluatorOptions(sub, &opt->evaluator);
   sub->add_option("--out", opt->out, "Run directory")->required();
   AddStartFlags(sub, &opt->start, "the run");
   sub->add_option("--population", opt->ga.population, "Children per generation")

@@ -4,10 +4,14 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/commands.h"
+#ifdef WALKERS_HAVE_MPI
+#include "evolve/mpi_evaluator.h"
+#endif
 
 namespace {
 
@@ -77,9 +81,7 @@ std::unique_ptr<CLI::ExtrasError> UnknownArguments(CLI::App& app, const std::vec
   return std::make_unique<CLI::ExtrasError>(message, CLI::ExitCodes::ExtrasError);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int RunCommandLine(int argc, char** argv) {
   CLI::App app{"Scaffolded bipedal walkers: a planar biped evolved with robotics scaffolded learning."};
   app.require_subcommand(1);
 
@@ -106,4 +108,22 @@ int main(int argc, char** argv) {
     std::cerr << "walkers: error: " << e.what() << "\n";
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+#ifdef WALKERS_HAVE_MPI
+  // in an MPI job rank 0 runs the command; the other ranks evaluate for it
+  std::optional<walkers::mpi::Session> mpi;
+  if (walkers::mpi::LaunchedByLauncher()) {
+    mpi.emplace(&argc, &argv);
+    if (mpi->rank() != 0) {
+      walkers::mpi::ServeEvaluations();
+      return 0;
+    }
+    return mpi->Finish(RunCommandLine(argc, argv));
+  }
+#endif
+  return RunCommandLine(argc, argv);
 }

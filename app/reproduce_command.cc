@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "app/commands.h"
+#include "app/evaluators.h"
 #include "app/validators.h"
 #include "app/figures.h"
 #include "app/progress.h"
@@ -19,7 +22,8 @@ struct ReproduceOptions {
   std::string preset = "original";
   int generations = 4000;
   int replicates = 3;
-  int threads = 0;
+  EvaluatorOptions evaluator;
+  int runs_at_once = 0;  // 0: as many as the evaluator makes evaluations at once
   std::uint64_t seed = 1;
   std::string out;
   StartFlags start;
@@ -33,37 +37,48 @@ int RunReproduce(const ReproduceOptions& opt) {
   config.replicates = opt.replicates;
   config.seed = opt.seed;
   config.Validate();
-  const int threads = ThreadsOrAllCores(opt.threads);
+  const std::unique_ptr<Evaluator> evaluator = MakeEvaluator(opt.evaluator);
+  const int runs_at_once = opt.runs_at_once > 0 ? opt.runs_at_once : evaluator->slots();
 
   const auto start = std::chrono::steady_clock::now();
   const int total = static_cast<int>(PlanRuns(config).size());
-  int index = 0;
+  int index = 0;  // runs started
   // Time left for all runs, from this session's pace: generations are
   // counted as not done until their run starts and says how many it has.
   long generations_left = static_cast<long>(total) * config.generations;
   long generations_done = 0;  // in this session
-  std::unique_ptr<Progress> progress;
-  ReproductionObserver observer;
+  // one progress line per run; with runs side by side they take turns
+  std::map<std::string, std::unique_ptr<Progress>> progress;
+  const auto finish_lines = [&] {
+    for (auto& [name, p] : progress) p->Finish();
+  };
+  ReproductionObserver observer;  // called one call at a time
   observer.on_run_start = [&](const PlannedRun& run, int completed) {
-    if (progress) progress->Finish();
+    finish_lines();
     std::fprintf(stderr, "run %d/%d: %s (seed %llu)%s\n", ++index, total, run.name.c_str(),
                  static_cast<unsigned long long>(run.config.seed),
                  completed >= run.config.generations ? ", done already"
                  : completed > 0                      ? (", resuming after generation " + std::to_string(completed)).c_str()
                                                       : "");
     generations_left -= std::min(completed, run.config.generations);
-    progress = std::make_unique<Progress>(run.name);
+    progress[run.name] = std::make_unique<Progress>(run.name);
   };
-  observer.on_generation = [&](const PlannedRun&, const GenerationSummary& s) {
+  observer.on_generation = [&](const PlannedRun& run, const GenerationSummary& s) {
     --generations_left;
     ++generations_done;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    progress->Report(s, elapsed / generations_done * generations_left);
+    // every other run's line is ended before this one is drawn in place
+    for (auto& [name, p] : progress) {
+      if (name != run.name) p->Finish();
+    }
+    progress.at(run.name)->Report(s, elapsed / generations_done * generations_left);
   };
   // the directory stays locked until the figures are drawn
   Reproduction reproduction(config, opt.out, opt.start.mode());
-  const ReproductionSummary summary = reproduction.Run(threads, observer);
-  if (progress) progress->Finish();
+  std::fprintf(stderr, "%d runs, %d at once, on %s\n", total, std::min(runs_at_once, total),
+               DescribeEvaluator(opt.evaluator).c_str());
+  const ReproductionSummary summary = reproduction.Run(*evaluator, observer, runs_at_once);
+  finish_lines();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::printf("%d runs, %ld evaluations (%.1f per second of evaluation time); this session %s\n", total,
@@ -113,7 +128,10 @@ void AddReproduceCommand(CLI::App& app, Command* selected) {
   sub->add_option("--replicates", opt->replicates, "Runs per case")
       ->check(IntegerRange(1, kMaxReplicates))
       ->capture_default_str();
-  AddThreadsOption(sub, &opt->threads);
+  AddEvaluatorOptions(sub, &opt->evaluator);
+  sub->add_option("--runs-at-once", opt->runs_at_once,
+                  "Runs advanced side by side, sharing the threads (default: as many as threads, or MPI ranks)")
+      ->check(IntegerRange(1, 1024));
   AddSeedOption(sub, &opt->seed, "Seed of replicate 1; replicate r uses seed + r - 1");
   sub->add_option("--out", opt->out, "Reproduction directory")->required();
   AddStartFlags(sub, &opt->start, "the reproduction");

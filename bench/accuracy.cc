@@ -16,7 +16,6 @@
 // every genome passes by this program's test (medians, IQR, gait, fall), 1
 // when one does not, 2 on bad input.
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -27,11 +26,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "bench/variants.h"
 #include "control/accuracy.h"
+#include "evolve/evaluator.h"
 
 using namespace walkers;
 
@@ -138,20 +137,31 @@ int Run(const Options& opt) {
   std::vector<Genome> genomes;
   for (const std::string& file : opt.genomes) genomes.push_back(LoadGenome(file));
 
-  // genomes are shared out to the threads; each result has its slot, so the
-  // output does not depend on the number of threads
-  std::vector<FitnessEnsemble> production(genomes.size()), tighter(genomes.size());
-  std::atomic<size_t> next{0};
-  std::vector<std::thread> pool;
-  for (int t = 0; t < opt.threads; ++t) {
-    pool.emplace_back([&] {
-      for (size_t i; (i = next++) < genomes.size();) {
-        production[i] = EvaluateEnsemble(genomes[i], OriginalPreset(), opt.production, opt.ensemble);
-        tighter[i] = EvaluateEnsemble(genomes[i], OriginalPreset(), tight, opt.ensemble);
-      }
-    });
+  // every member of every ensemble is one task for the evaluator's threads;
+  // each result has its slot, so the output does not depend on the number of
+  // threads
+  const Preset preset = OriginalPreset();
+  const std::vector<EvaluationSettings> settings = {opt.production, tight};
+  std::vector<EvaluationSettings> members;  // [settings][member]
+  for (const EvaluationSettings& s : settings) {
+    for (int k = 0; k < opt.ensemble; ++k) members.push_back(EnsembleMemberSettings(s, opt.ensemble, k));
   }
-  for (std::thread& t : pool) t.join();
+  std::vector<EvaluationResult> flat(genomes.size() * members.size());  // [genome][settings][member]
+  std::vector<EvaluationTask> tasks;
+  for (size_t i = 0; i < genomes.size(); ++i) {
+    for (size_t m = 0; m < members.size(); ++m) {
+      // the tighter ensembles cost more: handed out first
+      tasks.push_back({&genomes[i], &preset, &members[m], &flat[i * members.size() + m],
+                       m < static_cast<size_t>(opt.ensemble) ? 1.0 : 2.0});
+    }
+  }
+  MakeThreadEvaluator(opt.threads)->EvaluateAll(tasks);
+  std::vector<FitnessEnsemble> production, tighter;
+  for (size_t i = 0; i < genomes.size(); ++i) {
+    const auto first = flat.begin() + static_cast<long>(i * members.size());
+    production.push_back(EnsembleOf({first, first + opt.ensemble}));
+    tighter.push_back(EnsembleOf({first + opt.ensemble, first + 2 * opt.ensemble}));
+  }
 
   const auto& s = opt.production.integrator;
   std::printf("settings: %s (rtol %g, atol_q %g, atol_v %g), tight: 100x; ensembles of %d\n",

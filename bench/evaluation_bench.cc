@@ -5,11 +5,14 @@
 //   evaluation_bench --benchmark_filter=Genome/authors   per genome of the authors' final archives
 //   evaluation_bench --benchmark_filter=Variant      the choices of docs/performance.md
 //   evaluation_bench --benchmark_filter=Generation   16 children on 2 threads
+#include <memory>
+
 #include <benchmark/benchmark.h>
 
 #include "bench/genome_set.h"
 #include "bench/variants.h"
 #include "control/evaluation.h"
+#include "evolve/evaluator.h"
 #include "evolve/genetic_algorithm.h"
 
 namespace walkers::bench {
@@ -49,9 +52,12 @@ void Generation(benchmark::State& st) {
   Archive archive(config.archive_size);
   std::set<GenomeKey> seen;
   const std::vector<Individual> children = Breed(config, {1, 0, kBodyCeiling, MutationRules{}}, archive, &seen);
+  const std::unique_ptr<Evaluator> evaluator = MakeThreadEvaluator(2);  // its threads started once
+  const Preset preset = OriginalPreset();
+  const EvaluationSettings settings;
   for (auto _ : st) {
     std::vector<Individual> batch = children;
-    EvaluateAll(&batch, OriginalPreset(), EvaluationSettings{}, 2);
+    EvaluateIndividuals(*evaluator, &batch, preset, settings);
     benchmark::DoNotOptimize(batch);
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(children.size()));

@@ -71,19 +71,16 @@ double FitnessEnsemble::WorstDifferenceFrom(double reference) const {
   return worst;
 }
 
-FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
-                                 int size, const EvaluationResult* unperturbed) {
+EvaluationSettings EnsembleMemberSettings(const EvaluationSettings& settings, int size, int k) {
+  const double offset = k - 0.5 * (size - 1);  // half-integers for an even size
+  EvaluationSettings member = settings;
+  if (offset != 0.0) member.integrator.relative_tolerance *= 1.0 + 1e-4 * offset;
+  return member;
+}
+
+FitnessEnsemble EnsembleOf(const std::vector<EvaluationResult>& members) {
   FitnessEnsemble ensemble;
-  for (int k = 0; k < size; ++k) {
-    const double offset = k - 0.5 * (size - 1);  // half-integers for an even size
-    EvaluationResult r;
-    if (offset == 0.0 && unperturbed) {
-      r = *unperturbed;
-    } else {
-      EvaluationSettings member = settings;
-      member.integrator.relative_tolerance *= 1.0 + 1e-4 * offset;
-      r = Evaluate(genome, preset, member);
-    }
+  for (const EvaluationResult& r : members) {
     ensemble.fitness.push_back(r.fitness);
     ensemble.bipeds += r.gait == Gait::kBiped ? 1 : 0;
     ensemble.tripods += r.gait == Gait::kTripod ? 1 : 0;
@@ -92,6 +89,17 @@ FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, con
     ensemble.wall_ms.push_back(r.wall_ms);
   }
   return ensemble;
+}
+
+FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
+                                 int size, const EvaluationResult* unperturbed) {
+  std::vector<EvaluationResult> members;
+  for (int k = 0; k < size; ++k) {
+    const bool middle = 2 * k == size - 1;
+    members.push_back(middle && unperturbed ? *unperturbed
+                                            : Evaluate(genome, preset, EnsembleMemberSettings(settings, size, k)));
+  }
+  return EnsembleOf(members);
 }
 
 }  // namespace walkers

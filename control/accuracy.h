@@ -83,4 +83,10 @@ AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEn
 FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
                                  int size, const EvaluationResult* unperturbed = nullptr);
 
+// The settings of member k (0 <= k < size) of such an ensemble, and the
+// ensemble of the members' results, for a caller that makes the evaluations
+// itself (on an Evaluator's workers, say).
+EvaluationSettings EnsembleMemberSettings(const EvaluationSettings& settings, int size, int k);
+FitnessEnsemble EnsembleOf(const std::vector<EvaluationResult>& members);
+
 }  // namespace walkers

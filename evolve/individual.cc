@@ -1,8 +1,6 @@
 #include "evolve/individual.h"
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace walkers {
 
@@ -27,20 +25,5 @@ double Archive::AverageOfBest(int n) const {
 }
 
 double Archive::Mean() const { return AverageOfBest(static_cast<int>(members_.size())); }
-
-void EvaluateAll(std::vector<Individual>* individuals, const Preset& preset, const EvaluationSettings& settings,
-                 int threads) {
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i = next++; i < individuals->size(); i = next++) {
-      (*individuals)[i].result = Evaluate((*individuals)[i].genome, preset, settings);
-    }
-  };
-  const int n = std::max(1, std::min<int>(threads, static_cast<int>(individuals->size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-}
 
 }  // namespace walkers

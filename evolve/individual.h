@@ -45,9 +45,4 @@ class Archive {
   std::vector<Individual> members_;
 };
 
-// Evaluates every individual on `threads` worker threads. Results depend only
-// on the genomes, never on the threads.
-void EvaluateAll(std::vector<Individual>* individuals, const Preset& preset, const EvaluationSettings& settings,
-                 int threads);
-
 }  // namespace walkers

@@ -1,7 +1,11 @@
 #include "evolve/reproduction.h"
 
+#include <algorithm>
+#include <exception>
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -126,55 +130,85 @@ Reproduction::Reproduction(const ReproductionConfig& config, const std::string& 
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
   plan_ = PlanRuns(config_);
-  OpenedFolder opened = OpenResultsFolder(dir, "reproduction", mode == StartMode::kResume,
-                                          RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint);
-  lock_.emplace(std::move(opened.lock));
-  const bool has_aside = opened.stopped_force;
-  const std::string aside = SetAside::FolderIn(dir);
-  const std::vector<std::string> names = ReproductionNames(dir);
-  switch (mode) {
-    case StartMode::kResume:
-      if (has_aside) throw StoppedForceError(dir, "reproduction");
-      break;
-    case StartMode::kNew:
-      for (const std::string& name : names) {
-        const std::string path = (fs::path(dir) / name).string();
-        if (has_aside || fs::exists(path)) {
-          throw std::runtime_error(dir + ": holds a reproduction already (" + (has_aside ? aside : path) +
-                                   "); pass --resume to continue it or --force to replace it");
-        }
-      }
-      break;
-    case StartMode::kForce: {
-      // no run may be moved while another process writes it
-      std::vector<FolderLock> runs;
-      for (const std::string& name : names) {
-        const fs::path run = fs::path(dir) / name;
-        if (IsRunName(name) && fs::is_directory(run)) runs.emplace_back(run.string(), "run");
-      }
-      replaced_ = std::make_unique<SetAside>(dir, names);
-      break;
+  const auto contents = [&] {
+    FolderContents held{ReproductionNames(dir), "", false};
+    for (const std::string& name : held.names) {
+      const std::string path = (fs::path(dir) / name).string();
+      if (!held.any && fs::exists(path)) held.any = true, held.found = " (" + path + ")";
     }
-  }
+    return held;
+  };
+  // no run may be moved while another process writes it
+  const auto lock_runs = [&](const FolderContents& held) {
+    std::vector<FolderLock> runs;
+    for (const std::string& name : held.names) {
+      const fs::path run = fs::path(dir) / name;
+      if (IsRunName(name) && fs::is_directory(run)) runs.emplace_back(run.string(), "run");
+    }
+    return runs;
+  };
+  StartedFolder started =
+      StartResultsFolder(dir, "reproduction", mode, RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint,
+                         contents, lock_runs);
+  lock_.emplace(std::move(started.lock));
+  replaced_ = std::move(started.replaced);
 }
 
 // replaced_ goes first, while the lock is still held
 Reproduction::~Reproduction() = default;
 
-ReproductionSummary Reproduction::Run(int threads, const ReproductionObserver& observer) {
-  for (const PlannedRun& run : plan_) {
-    const std::string run_dir = (fs::path(dir_) / run.name).string();
-    const bool started = fs::exists(RunFiles(run_dir).config);
-    EvolutionRun evolution(run.config, run_dir, started ? StartMode::kResume : StartMode::kNew, threads);
-    if (observer.on_run_start) observer.on_run_start(run, evolution.completed_generations());
-    evolution.Run([&](const GenerationSummary& s) {
-      if (replaced_) {
-        replaced_->Discard();  // the first new run has its first checkpoint
-        replaced_.reset();
+ReproductionSummary Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observer, int runs_at_once) {
+  // Runs side by side: each of `runs_at_once` threads takes the next run of
+  // the plan and advances it generation by generation, all of them handing
+  // their children to the one evaluator, so that its workers have another
+  // run's children while a generation waits for its slowest. Every run is
+  // deterministic on its own, so its files do not depend on how many run at
+  // once. The observer is called by one thread at a time.
+  std::mutex mutex;  // the observer, replaced_, the first error
+  std::size_t next = 0;
+  std::exception_ptr error;
+  struct Stopped {};  // another run failed: this one stops after its generation
+  const auto runner = [&] {
+    for (;;) {
+      std::size_t index;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (error || next == plan_.size()) return;
+        index = next++;
       }
-      if (observer.on_generation) observer.on_generation(run, s);
-    });
-  }
+      const PlannedRun& run = plan_[index];
+      try {
+        const std::string run_dir = (fs::path(dir_) / run.name).string();
+        const bool started = fs::exists(RunFiles(run_dir).config);
+        EvolutionRun evolution(run.config, run_dir, started ? StartMode::kResume : StartMode::kNew, evaluator);
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          if (observer.on_run_start) observer.on_run_start(run, evolution.completed_generations());
+        }
+        evolution.Run([&](const GenerationSummary& s) {
+          std::lock_guard<std::mutex> lock(mutex);
+          if (replaced_) {
+            replaced_->Discard();  // the first new run has its first checkpoint
+            replaced_.reset();
+          }
+          if (observer.on_generation) observer.on_generation(run, s);
+          if (error) throw Stopped{};
+        });
+      } catch (const Stopped&) {
+        return;
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        return;
+      }
+    }
+  };
+  const int threads = std::max(1, std::min<int>(runs_at_once, static_cast<int>(plan_.size())));
+  std::vector<std::thread> side_by_side;
+  for (int t = 1; t < threads; ++t) side_by_side.emplace_back(runner);
+  runner();
+  for (std::thread& t : side_by_side) t.join();
+  if (error) std::rethrow_exception(error);
   return WriteReproductionResults(config_, dir_);
 }
 

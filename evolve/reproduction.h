@@ -27,6 +27,7 @@
 #include "control/evaluation.h"
 #include "control/preset.h"
 #include "evolve/analysis.h"
+#include "evolve/evaluator.h"
 #include "evolve/genetic_algorithm.h"
 #include "evolve/run.h"
 
@@ -76,7 +77,8 @@ nlohmann::json ScaffoldsJson();
 nlohmann::json LearnersJson(const std::vector<std::string>& learners);
 
 // Called before each run starts (with how many generations it has done) and
-// after each of its generations.
+// after each of its generations; with runs side by side, from their threads,
+// one call at a time.
 struct ReproductionObserver {
   std::function<void(const PlannedRun&, int completed_generations)> on_run_start;
   std::function<void(const PlannedRun&, const GenerationSummary&)> on_generation;
@@ -96,9 +98,12 @@ class Reproduction {
   Reproduction(const ReproductionConfig& config, const std::string& dir, StartMode mode);
   ~Reproduction();
 
-  // Runs (or resumes) every run, then writes the summary and figure data.
-  // Returns WriteReproductionResults's summary.
-  ReproductionSummary Run(int threads, const ReproductionObserver& observer = {});
+  // Runs (or resumes) every run, `runs_at_once` of them side by side, their
+  // evaluations on `evaluator`; then writes the summary and figure data.
+  // Returns WriteReproductionResults's summary. The files do not depend on
+  // the evaluator or on runs_at_once. When a run fails, the others stop
+  // after their generation under way and its error is thrown.
+  ReproductionSummary Run(Evaluator& evaluator, const ReproductionObserver& observer = {}, int runs_at_once = 1);
 
  private:
   ReproductionConfig config_;

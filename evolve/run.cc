@@ -1,225 +1,18 @@
 #include "evolve/run.h"
 
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "control/input_file.h"
 #include "evolve/files.h"
 
 namespace walkers {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const char* const kGenerationsHeader =
-    "generation,best_fitness,ave_best3,archive_mean,ceiling_half_body_x,best_half_body_x,best_femur,best_tibia,"
-    "best_gait,falls,evals_per_s";
-
-std::string EvaluationsHeader() {
-  std::string h = "generation,child,parents";
-  for (const GeneSpec& spec : GeneTable()) h += std::string(",") + spec.name;
-  return h + ",fitness,distance,fell,gait,footsteps,trunk_contact_fraction,cvode_steps,failure,wall_ms";
-}
-
 namespace {
-
-constexpr int kCheckpointFormat = 1;
-
-std::string CsvQuoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string EvaluationRow(const Individual& ind) {
-  std::ostringstream row;
-  row << ind.generation << ',' << ind.child << ',' << ind.parents;
-  for (double g : ind.genome.genes) row << ',' << FormatExact(g);
-  const EvaluationResult& r = ind.result;
-  row << ',' << FormatExact(r.fitness) << ',' << FormatExact(r.distance) << ',' << (r.fell ? 1 : 0) << ','
-      << GaitName(r.gait) << ',' << r.footsteps << ',' << FormatExact(r.trunk_contact_fraction) << ','
-      << r.cvode_steps << ',' << (r.failure.empty() ? "" : CsvQuoted(r.failure)) << ',' << FormatExact(r.wall_ms)
-      << '\n';
-  return row.str();
-}
-
-std::string GenerationRow(const GenerationSummary& s) {
-  std::ostringstream row;
-  row << s.generation << ',' << FormatExact(s.best_fitness) << ',' << FormatExact(s.ave_best3) << ','
-      << FormatExact(s.archive_mean) << ',' << FormatExact(s.ceiling) << ',' << FormatExact(s.best_half_body_x) << ','
-      << FormatExact(s.best_femur) << ',' << FormatExact(s.best_tibia) << ',' << GaitName(s.best_gait) << ','
-      << s.falls << ',' << FormatExact(s.evals_per_s) << '\n';
-  return row.str();
-}
-
-json IndividualToJson(const Individual& ind) {
-  const EvaluationResult& r = ind.result;
-  return {{"id", ind.id()},
-          {"generation", ind.generation},
-          {"child", ind.child},
-          {"parents", ind.parents},
-          {"fitness", r.fitness},
-          {"distance", r.distance},
-          {"fell", r.fell},
-          {"gait", GaitName(r.gait)},
-          {"footsteps", r.footsteps},
-          {"trunk_contact_fraction", r.trunk_contact_fraction},
-          {"cvode_steps", r.cvode_steps},
-          {"failure", r.failure},
-          {"genome", GenomeToJson(ind.genome)}};
-}
-
-json MembersToJson(const std::vector<Individual>& members) {
-  json out = json::array();
-  for (const Individual& ind : members) out.push_back(IndividualToJson(ind));
-  return out;
-}
-
-// The learner of a run, in its files: named only when it is not the paper's GA.
-bool NamesLearner(const RunConfig& c) { return c.learner != DefaultLearner().name; }
-
-// archive.json's content
-json ArchiveFileJson(const RunConfig& c, int completed, double initial_fitness, const std::vector<Individual>& members) {
-  json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
-              {"preset", c.preset.name},
-              {"generations", completed},
-              {"initial_fitness", initial_fitness},
-              {"archive", MembersToJson(members)}};
-  if (NamesLearner(c)) out["learner"] = c.learner;
-  return out;
-}
-
-// the keys of a JSON object
-std::vector<std::string> KeysOf(const json& object) {
-  std::vector<std::string> keys;
-  for (const auto& item : object.items()) keys.push_back(item.key());
-  return keys;
-}
-
-// The gaits files may name.
-constexpr Gait kGaits[] = {Gait::kBiped, Gait::kTripod, Gait::kNone};
-
-Gait GaitFromName(const JsonFields& f, const std::string& key) {
-  std::vector<std::string> names;
-  for (Gait g : kGaits) names.push_back(GaitName(g));
-  const std::string name = f.OneOf(key, names);
-  for (Gait g : kGaits) {
-    if (name == GaitName(g)) return g;
-  }
-  return Gait::kBiped;  // not reached: OneOf refused it
-}
-
-// An archive member of a run of `generations` generations of `population` children.
-Individual IndividualFromJson(const JsonFields& f, int generations, int population) {
-  f.RequireOnly(KeysOf(IndividualToJson(Individual{})));
-  Individual ind;
-  ind.generation = static_cast<int>(f.Integer("generation", 0, generations - 1));
-  ind.child = static_cast<int>(f.Integer("child", 0, population - 1));
-  if (f.String("id") != ind.id()) f.Fail("id", "is not \"" + ind.id() + "\", its generation and child");
-  ind.parents = f.String("parents");
-  ind.genome = GenomeFromJson(f.Get("genome"), f.source() + ": " + f.Name("genome"));
-  EvaluationResult& r = ind.result;
-  r.fitness = f.Number("fitness");
-  r.distance = f.Number("distance");
-  r.fell = f.Bool("fell");
-  r.gait = GaitFromName(f, "gait");
-  r.footsteps = static_cast<int>(f.Integer("footsteps", 0, std::numeric_limits<int>::max()));
-  r.trunk_contact_fraction = f.Number("trunk_contact_fraction", {0.0, 1.0});
-  r.cvode_steps = static_cast<long>(f.Integer("cvode_steps", 0, std::numeric_limits<long>::max()));
-  r.failure = f.String("failure");
-  r.leg_length = ind.genome.leg_length();
-  return ind;
-}
-
-int IntField(const JsonFields& f, const std::string& key) {
-  return static_cast<int>(f.Integer(key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
-}
-
-// The evaluation settings config.json records, with their allowed ranges.
-struct EvaluationField {
-  const char* key;
-  NumberRange range;
-  double* (*of)(EvaluationSettings*);
-};
-const EvaluationField kEvaluationFields[] = {
-    {"duration", {0, 3600, true}, [](EvaluationSettings* e) { return &e->duration; }},
-    {"relative_tolerance", {0, 1, true}, [](EvaluationSettings* e) { return &e->integrator.relative_tolerance; }},
-    {"absolute_tolerance_position", {0, 1, true},
-     [](EvaluationSettings* e) { return &e->integrator.absolute_tolerance_position; }},
-    {"absolute_tolerance_velocity", {0, 1, true},
-     [](EvaluationSettings* e) { return &e->integrator.absolute_tolerance_velocity; }},
-    {"contact_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->contact.surface.stiffness; }},
-    {"contact_dissipation", {0, 1e6}, [](EvaluationSettings* e) { return &e->contact.surface.dissipation; }},
-    {"friction_transition_velocity", {0, 1e3, true},
-     [](EvaluationSettings* e) { return &e->contact.transition_velocity; }},
-    {"weld_depth", {0, 0.1}, [](EvaluationSettings* e) { return &e->weld.depth; }},
-    {"weld_stabilization", {0, 1e6, true}, [](EvaluationSettings* e) { return &e->weld.stabilization; }},
-};
-constexpr int kMaxBdfOrder = 5;  // CVODE's BDF, the method of every run
-// InitF of the performance scaffold: positive (kAuthorsInitialFitness)
-constexpr NumberRange kInitialFitnessRange{0, 1000, true};
-
-double Of(const EvaluationField& field, const EvaluationSettings& settings) {
-  return *field.of(const_cast<EvaluationSettings*>(&settings));
-}
-
-// The rows a checkpoint names: the first `bytes` bytes of a CSV file, whose
-// header must be `header`; calls row(reader, index) for each. Returns how many.
-template <typename OnRow>
-long CheckedRows(const std::string& path, std::uint64_t bytes, const std::string& header, const OnRow& row) {
-  std::string text = ReadFile(path);
-  if (text.size() < bytes) {
-    throw std::runtime_error(path + ": " + std::to_string(text.size()) + " bytes, shorter than the " +
-                             std::to_string(bytes) + " the checkpoint says");
-  }
-  text.resize(bytes);
-  if (text.empty() || text.back() != '\n') {
-    throw std::runtime_error(path + ": the checkpoint's size of " + std::to_string(bytes) + " bytes ends within a row");
-  }
-  if (text.compare(0, header.size() + 1, header + "\n") != 0) {
-    throw std::runtime_error(path + ": its header is not this program's (" + header.substr(0, 40) + "...)");
-  }
-  CsvReader reader(std::move(text), path);
-  long rows = 0;
-  while (reader.Next()) row(reader, rows++);
-  return rows;
-}
-
-// data rows (lines after the header) of a file, 0 if there is none
-long DataRows(const std::string& path) {
-  if (!fs::exists(path)) return 0;
-  const std::string text = ReadFile(path);
-  const long lines = static_cast<long>(std::count(text.begin(), text.end(), '\n'));
-  return std::max(0L, lines - 1);
-}
-
-// The archive of f's "archive" after `completed` generations: as large as
-// they make it, best first, each member's generation and child within them.
-std::vector<Individual> ArchiveFromJson(const JsonFields& f, int completed, const GeneticAlgorithmConfig& ga) {
-  const json& members = f.Array("archive");
-  const long size = std::min<long>(ga.archive_size, static_cast<long>(completed) * ga.population);
-  if (static_cast<long>(members.size()) != size) {
-    f.Fail("archive", "has " + std::to_string(members.size()) + " members; " + std::to_string(completed) +
-                          " generations of " + std::to_string(ga.population) + " children fill " +
-                          std::to_string(size));
-  }
-  std::vector<Individual> archive;
-  for (std::size_t i = 0; i < members.size(); ++i) {
-    const std::string where = "archive[" + std::to_string(i) + "]";
-    Individual ind = IndividualFromJson(JsonFields(members[i], f.source(), where + "."), completed, ga.population);
-    if (!archive.empty() && !Fitter(archive.back(), ind)) {
-      f.Fail(where, "(" + ind.id() + ") is not after archive[" + std::to_string(i - 1) +
-                        "] in the archive's order: fitter first, then older");
-    }
-    archive.push_back(std::move(ind));
-  }
-  return archive;
-}
 
 void RequireSame(const json& stored, const json& requested, const std::string& source) {
   for (const auto& item : requested.items()) {
@@ -234,181 +27,25 @@ void RequireSame(const json& stored, const json& requested, const std::string& s
 
 }  // namespace
 
-void RunConfig::Validate() const {
-  const LearnerSpec& spec = LearnerByName(learner);
-  RequireInRange("generations", generations, 1, kMaxGenerations);
-  if (seed > kMaxSeed) {
-    throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
-                                std::to_string(kMaxSeed) + "]");
-  }
-  ga.Validate();
-  if (ga.population < spec.min_population) {
-    throw std::invalid_argument("population = " + std::to_string(ga.population) + " is outside its allowed range [" +
-                                std::to_string(spec.min_population) + ", " + std::to_string(kMaxPopulation) +
-                                "] for the learner " + spec.name);
-  }
-  for (const EvaluationField& field : kEvaluationFields) {
-    RequireInRange(std::string("evaluation.") + field.key, Of(field, evaluation), field.range);
-  }
-  RequireInRange("evaluation.max_order", evaluation.integrator.max_order, 1, kMaxBdfOrder);
-}
-
-json RunConfigToJson(const RunConfig& c) {
-  json evaluation = {{"max_order", c.evaluation.integrator.max_order}};
-  for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, c.evaluation);
-  json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
-              {"preset", c.preset.name},
-              {"generations", c.generations},
-              {"seed", c.seed},
-              {"population", c.ga.population},
-              {"archive_size", c.ga.archive_size},
-              {"mutation_children", c.ga.mutation_children},
-              {"mutation_probability", c.ga.mutation_probability},
-              {"evaluation", evaluation}};
-  if (NamesLearner(c)) out["learner"] = c.learner;
-  return out;
-}
-
-RunConfig RunConfigFromJson(const json& j, const std::string& source) {
-  try {
-    const json keys = RunConfigToJson(RunConfig{});
-    const JsonFields f(j, source);
-    std::vector<std::string> known = KeysOf(keys);
-    known.push_back("learner");  // absent: the paper's GA
-    f.RequireOnly(known);
-    RunConfig c;
-    c.scaffold_case = ScaffoldCaseByName(f.String("case"));
-    if (j.contains("learner")) c.learner = f.OneOf("learner", LearnerNames());
-    c.preset = PresetByName(f.String("preset"));
-    c.generations = IntField(f, "generations");
-    c.seed = f.Unsigned("seed", kMaxSeed);
-    c.ga.population = IntField(f, "population");
-    c.ga.archive_size = IntField(f, "archive_size");
-    c.ga.mutation_children = IntField(f, "mutation_children");
-    c.ga.mutation_probability = f.Number("mutation_probability");
-    const JsonFields e = f.Object("evaluation");
-    e.RequireOnly(KeysOf(keys.at("evaluation")));
-    for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
-    c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
-    c.Validate();
-    return c;
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(source + ": " + e.what());
-  }
-}
-
-RunConfig ParseRunConfig(const std::string& text, const std::string& source) {
-  return RunConfigFromJson(ParseJson(text, source), source);
-}
-
-json CheckpointToJson(const Checkpoint& cp) {
-  json out = {{"format", kCheckpointFormat},
-              {"completed_generations", cp.completed_generations},
-              {"initial_fitness", cp.initial_fitness},
-              {"evaluations_bytes", cp.evaluations_bytes},
-              {"generations_bytes", cp.generations_bytes},
-              {"archive", MembersToJson(cp.archive)}};
-  if (!cp.learner.is_null()) out["learner"] = cp.learner;
-  return out;
-}
-
-Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source) {
-  const json j = ParseJson(text, source);
-  const JsonFields f(j, source);
-  // a learner with a state of its own keeps it here; the GA has none
-  const std::unique_ptr<Learner> learner = MakeLearner(config.learner, config.ga, config.seed);
-  std::vector<std::string> known = KeysOf(CheckpointToJson(Checkpoint{}));
-  if (learner->KeepsState()) known.push_back("learner");
-  f.RequireOnly(known);
-  const std::int64_t format = f.Integer("format", std::numeric_limits<std::int64_t>::min(),
-                                        std::numeric_limits<std::int64_t>::max());
-  if (format != kCheckpointFormat) {
-    f.Fail("format", "= " + std::to_string(format) + ": this program reads format " +
-                         std::to_string(kCheckpointFormat) + " only");
-  }
-  Checkpoint cp;
-  cp.completed_generations = static_cast<int>(f.Integer("completed_generations", 1, config.generations));
-  cp.initial_fitness = f.Number("initial_fitness", kInitialFitnessRange);
-  cp.evaluations_bytes = f.Unsigned("evaluations_bytes", std::numeric_limits<std::int64_t>::max());
-  cp.generations_bytes = f.Unsigned("generations_bytes", std::numeric_limits<std::int64_t>::max());
-  cp.archive = ArchiveFromJson(f, cp.completed_generations, config.ga);
-  if (learner->KeepsState()) {
-    cp.learner = f.Get("learner");
-    learner->Restore(cp.learner, cp.completed_generations, source);
-  }
-  return cp;
-}
-
-std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& config) {
-  const json j = LoadJsonFile(path);
-  const JsonFields f(j, path);
-  f.RequireOnly(KeysOf(ArchiveFileJson(config, 0, 0.0, {})));
-  if (f.String("case") != ScaffoldCaseName(config.scaffold_case) || f.String("preset") != config.preset.name) {
-    f.Fail("case", "and 'preset' are not the run's (" + std::string(ScaffoldCaseName(config.scaffold_case)) + ", " +
-                       config.preset.name + ")");
-  }
-  if (NamesLearner(config) && f.String("learner") != config.learner) {
-    f.Fail("learner", "is not the run's (" + config.learner + ")");
-  }
-  const int completed = static_cast<int>(f.Integer("generations", 1, config.generations));
-  f.Number("initial_fitness", kInitialFitnessRange);
-  return ArchiveFromJson(f, completed, config.ga);
-}
-
-RunFiles::RunFiles(const std::string& d)
-    : dir(d),
-      config((fs::path(d) / "config.json").string()),
-      checkpoint((fs::path(d) / "checkpoint.json").string()),
-      generations((fs::path(d) / "generations.csv").string()),
-      evaluations((fs::path(d) / "evaluations.csv").string()),
-      archive((fs::path(d) / "archive.json").string()),
-      best((fs::path(d) / "best.json").string()) {}
-
-const std::vector<std::string RunFiles::*>& RunFiles::All() {
-  static const std::vector<std::string RunFiles::*> all = {&RunFiles::config,      &RunFiles::checkpoint,
-                                                           &RunFiles::generations, &RunFiles::evaluations,
-                                                           &RunFiles::archive,     &RunFiles::best};
-  return all;
-}
-
-std::vector<std::string> RunFiles::Names() {
-  const RunFiles files("");
-  std::vector<std::string> names;
-  for (auto file : All()) names.push_back(fs::path(files.*file).filename().string());
-  return names;
-}
-
-EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, int threads)
-    : config_(config),
-      files_(dir),
-      threads_(std::max(1, threads)),
-      archive_(config.ga.archive_size) {
+EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, Evaluator& evaluator)
+    : config_(config), files_(dir), evaluator_(&evaluator), archive_(config.ga.archive_size) {
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
   scaffold_ = MakeScaffold(config.scaffold_case, config.preset);
   learner_ = MakeLearner(config.learner, config.ga, config.seed);
-  OpenedFolder opened = OpenResultsFolder(dir, "run", mode == StartMode::kResume, files_.checkpoint);
-  lock_.emplace(std::move(opened.lock));
-  const bool has_aside = opened.stopped_force;
-  bool has_run = has_aside;
-  for (auto file : RunFiles::All()) has_run = has_run || fs::exists(files_.*file);
-
-  switch (mode) {
-    case StartMode::kResume:
-      if (has_aside) throw StoppedForceError(dir, "run");
-      if (!fs::exists(files_.config)) throw std::runtime_error(dir + ": no run to resume (config.json is missing)");
-      Resume();
-      return;
-    case StartMode::kNew:
-      if (has_run) {
-        throw std::runtime_error(dir + ": holds a run already; pass --resume to continue it or --force to replace it");
-      }
-      break;
-    case StartMode::kForce:
-      replaced_ = std::make_unique<SetAside>(dir, RunFiles::Names());
-      break;
+  StartedFolder started = StartResultsFolder(dir, "run", mode, files_.checkpoint, [&] {
+    FolderContents held{RunFiles::Names(), "", false};
+    for (auto file : RunFiles::All()) held.any = held.any || fs::exists(files_.*file);
+    return held;
+  });
+  lock_.emplace(std::move(started.lock));
+  replaced_ = std::move(started.replaced);
+  if (mode == StartMode::kResume) {
+    if (!fs::exists(files_.config)) throw std::runtime_error(dir + ": no run to resume (config.json is missing)");
+    Resume();
+  } else {
+    StartFresh();
   }
-  StartFresh();
 }
 
 // replaced_ goes first, while the lock is still held
@@ -419,27 +56,6 @@ void EvolutionRun::StartFresh() {
   WriteFileAtomically(files_.generations, std::string(kGenerationsHeader) + "\n");
   WriteFileAtomically(files_.evaluations, EvaluationsHeader() + "\n");
   completed_ = 0;
-}
-
-void EvolutionRun::CheckNoResultsWithoutCheckpoint() const {
-  // a run killed before its first checkpoint has written at most generation
-  // 0's rows; anything more had a checkpoint, and starting again would hide
-  // that it went missing
-  const long generation_rows = DataRows(files_.generations), evaluation_rows = DataRows(files_.evaluations);
-  std::string results;
-  if (generation_rows > 1) results = "generations.csv has " + std::to_string(generation_rows) + " rows";
-  if (results.empty() && evaluation_rows > config_.ga.population) {
-    results = "evaluations.csv has " + std::to_string(evaluation_rows) + " rows";
-  }
-  for (const std::string* f : {&files_.archive, &files_.best}) {
-    if (results.empty() && fs::exists(*f)) results = fs::path(*f).filename().string() + " exists";
-  }
-  if (!results.empty()) {
-    throw std::runtime_error(files_.checkpoint + ": missing, but the run has results (" + results +
-                             "); restore checkpoint.json to resume the run, or pass --force to start it again "
-                             "(the old files are kept in " + SetAside::FolderIn(files_.dir) +
-                             " until the new run's first generation is written)");
-  }
 }
 
 void EvolutionRun::Resume() {
@@ -454,7 +70,7 @@ void EvolutionRun::Resume() {
   RequireSame(compared(stored), compared(config_), files_.config);
   if (!fs::exists(files_.checkpoint)) {
     // killed before its first generation completed: start it again
-    CheckNoResultsWithoutCheckpoint();
+    CheckNoResultsWithoutCheckpoint(files_, config_);
     StartFresh();
     return;
   }
@@ -464,34 +80,7 @@ void EvolutionRun::Resume() {
                              " generations already, more than the " + std::to_string(config_.generations) +
                              " asked for");
   }
-  // the CSV files up to the checkpoint: its generations, in order, every row whole
-  const int population = stored.ga.population;
-  std::set<GenomeKey> seen;
-  const long evaluations = CheckedRows(
-      files_.evaluations, cp.evaluations_bytes, EvaluationsHeader(), [&](const CsvReader& row, long index) {
-        row.Integer(0, index / population, index / population);  // generation
-        row.Integer(1, index % population, index % population);  // child
-        Genome g = DefaultGenome();
-        for (int k = 0; k < kNumGenes; ++k) g.genes[k] = row.Number(3 + k);
-        seen.insert(KeyOf(g));
-      });
-  const long expected = static_cast<long>(cp.completed_generations) * population;
-  if (evaluations != expected) {
-    throw std::runtime_error(files_.evaluations + ": " + std::to_string(evaluations) +
-                             " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations) +
-                             " generations of " + std::to_string(population) + " (" + std::to_string(expected) + ")");
-  }
-  const long generations = CheckedRows(files_.generations, cp.generations_bytes, kGenerationsHeader,
-                                       [](const CsvReader& row, long index) { row.Integer(0, index, index); });
-  if (generations != cp.completed_generations) {
-    throw std::runtime_error(files_.generations + ": " + std::to_string(generations) +
-                             " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations));
-  }
-  for (const Individual& ind : cp.archive) {
-    if (!seen.count(KeyOf(ind.genome))) {
-      throw std::runtime_error(files_.checkpoint + ": archive member " + ind.id() + " is not in " + files_.evaluations);
-    }
-  }
+  std::set<GenomeKey> seen = CheckRunFilesUpTo(files_, cp, stored);
 
   completed_ = cp.completed_generations;
   initial_fitness_ = cp.initial_fitness;
@@ -523,8 +112,11 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
     std::vector<Individual> children = learner_->Propose(in, archive_);
     AdmitChildren(*learner_, in, &children, &seen_);
 
+    // the costly children first, so the generation waits less for its slowest
+    std::vector<double> expected_costs;
+    for (const Individual& c : children) expected_costs.push_back(ExpectedCost(c, archive_));
     const auto start = std::chrono::steady_clock::now();
-    EvaluateAll(&children, config_.preset, config_.evaluation, threads_);
+    EvaluateIndividuals(*evaluator_, &children, config_.preset, config_.evaluation, expected_costs);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     learner_->Tell(in, children);

@@ -3,7 +3,8 @@
 # Run as root (or with sudo available). Nothing is downloaded at build or run time.
 #   setup.sh            what building and running need
 #   setup.sh --test     and what the tests need: Chromium, to check the replay page;
-#                       clang and its libFuzzer runtime, for the loaders' fuzz targets
+#                       clang and its libFuzzer runtime, for the loaders' fuzz targets;
+#                       Open MPI, for the runs shared over MPI ranks (docs/cluster.md)
 #   setup.sh --authors  and what building the authors' program for scripts/compare_authors.py needs
 set -euo pipefail
 
@@ -13,7 +14,7 @@ packages=(
   python3 python3-matplotlib python3-scipy
 )
 case "${1:-}" in
-  --test) packages+=(chromium clang libclang-rt-14-dev) ;;
+  --test) packages+=(chromium clang libclang-rt-14-dev libopenmpi-dev openmpi-bin) ;;
   --authors) packages+=(libsimbody-dev libarmadillo-dev) ;;
 esac
 

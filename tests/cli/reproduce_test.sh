@@ -130,6 +130,24 @@ for run in free-1 time-1 performance-1 cmaes-free-1 cmaes-time-1 cmaes-performan
   [ -s "$tmp/learners/$run/best.json" ] || fail "no $run/best.json"
 done
 grep -q '^| CMA-ES (cmaes) |' "$tmp/learners/summary.md" || fail "summary.md has no row for CMA-ES"
+# runs side by side (--threads 2: two at once) write the files of runs one at
+# a time on one thread, but for the wall-clock columns
+grep -q '^6 runs, 2 at once, on 2 threads' "$tmp/learners.txt" || fail "reproduce --threads 2 did not run 2 runs at once"
+WALKERS_PYTHON=/bin/true "$walkers" reproduce --learners ga,cmaes --generations 2 --replicates 1 --threads 1 \
+  --out "$tmp/one-at-a-time" >"$tmp/one.txt" 2>&1 || { cat "$tmp/one.txt"; fail "reproduce --threads 1 failed"; }
+for run in free-1 time-1 performance-1 cmaes-free-1 cmaes-time-1 cmaes-performance-1; do
+  for f in evaluations.csv generations.csv; do
+    cmp -s <(sed 's/,[^,]*$//' "$tmp/learners/$run/$f") <(sed 's/,[^,]*$//' "$tmp/one-at-a-time/$run/$f") ||
+      fail "$run/$f differs between runs side by side and one at a time"
+  done
+  for f in config.json archive.json best.json; do
+    cmp -s "$tmp/learners/$run/$f" "$tmp/one-at-a-time/$run/$f" ||
+      fail "$run/$f differs between runs side by side and one at a time"
+  done
+done
+for f in walks.json gallery.json; do
+  cmp -s "$tmp/learners/$f" "$tmp/one-at-a-time/$f" || fail "$f differs between runs side by side and one at a time"
+done
 for ext in png svg; do
   [ -s "$tmp/learners/figures/learners.$ext" ] || fail "no figures/learners.$ext"
 done

@@ -1,7 +1,11 @@
 // Hand-made individuals for the archive and breeding tests.
 #pragma once
 
+#include <map>
+#include <memory>
+
 #include "control/genome.h"
+#include "evolve/evaluator.h"
 #include "evolve/individual.h"
 
 namespace walkers::testing {
@@ -17,6 +21,14 @@ inline Individual WithFitness(int generation, int child, double fitness) {
   ind.genome[kKx] = 100.0 * generation + child;
   ind.result.fitness = fitness;
   return ind;
+}
+
+// An evaluator of `threads` threads of this process, shared by the tests.
+inline Evaluator& Threads(int threads) {
+  static std::map<int, std::unique_ptr<Evaluator>> evaluators;
+  std::unique_ptr<Evaluator>& e = evaluators[threads];
+  if (!e) e = MakeThreadEvaluator(threads);
+  return *e;
 }
 
 }  // namespace walkers::testing

@@ -3,17 +3,21 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
+#include "tests/evolve/individuals.h"
 #include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
 namespace fs = std::filesystem;
+using testing::Threads;
 
 // nine tiny runs: one generation of two children, half a second each
 ReproductionConfig Tiny(std::uint64_t seed = 5) {
@@ -41,7 +45,7 @@ class ReproductionTest : public TempDirTest {
 };
 
 TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
-  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(2);
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
   const std::string summary = ReadFile(ReproductionFiles(Dir("r")).summary_json);
   EXPECT_NE(Error([&] { Reproduction(Tiny(), Dir("r"), StartMode::kNew); }).find("holds a reproduction already"),
             std::string::npos);
@@ -59,7 +63,7 @@ TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
 }
 
 TEST_F(ReproductionTest, ForceKeepsTheOldReproductionUntilTheFirstNewCheckpoint) {
-  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(2);
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
   const std::string summary = ReadFile(ReproductionFiles(Dir("r")).summary_json);
   const std::string evaluations = ReadFile(Dir("r") + "/time-1/evaluations.csv");
   std::ofstream(Dir("r") + "/notes.txt") << "mine";
@@ -73,7 +77,7 @@ TEST_F(ReproductionTest, ForceKeepsTheOldReproductionUntilTheFirstNewCheckpoint)
   EXPECT_EQ(ReadFile(Dir("r") + "/time-1/evaluations.csv"), evaluations);
   EXPECT_FALSE(fs::exists(Dir("r") + "/replaced"));
 
-  Reproduction(Tiny(6), Dir("r"), StartMode::kForce).Run(2);
+  Reproduction(Tiny(6), Dir("r"), StartMode::kForce).Run(Threads(2));
   EXPECT_FALSE(fs::exists(Dir("r") + "/replaced"));
   EXPECT_NE(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
   EXPECT_EQ(ReadFile(Dir("r") + "/notes.txt"), "mine");  // not the reproduction's
@@ -98,7 +102,7 @@ TEST_F(ReproductionTest, SummaryListsEachRunsBestBipedAndBestTripod) {
   ReproductionConfig c = Tiny();
   c.generations = 2;
   c.evaluation.duration = 2.0;
-  Reproduction(c, Dir("r"), StartMode::kNew).Run(2);
+  Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2));
   const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
   ASSERT_EQ(summary["runs"].size(), 3u);
   int found = 0;
@@ -133,7 +137,7 @@ TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheO
   for (const PlannedRun& run : PlanRuns(c)) names.push_back(run.name + ":" + run.config.learner);
   EXPECT_EQ(names, (std::vector<std::string>{"free-1:ga", "time-1:ga", "performance-1:ga", "pso-free-1:pso",
                                              "pso-time-1:pso", "pso-performance-1:pso"}));
-  const ReproductionSummary returned = Reproduction(c, Dir("r"), StartMode::kNew).Run(2);
+  const ReproductionSummary returned = Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2));
   EXPECT_EQ(returned.evaluations, 6 * 2 * 2) << "every learner's evaluations";
   const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
   EXPECT_EQ(summary.at("runs").size(), 3u) << "the paper's statistics are the first learner's";
@@ -163,6 +167,68 @@ TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheO
   EXPECT_EQ(Error([&] { c.Validate(); }), "learners: at least one learner is needed");
   c.learners = {"sade"};  // sade needs 7 children
   EXPECT_EQ(Error([&] { c.Validate(); }), "population = 2 is outside its allowed range [7, 100000] for the learner sade");
+}
+
+// every file of a run folder but checkpoint.json (it records byte offsets,
+// which the wall-clock columns shift), with the last column of the CSV files
+// (wall_ms, evals_per_s) removed
+std::map<std::string, std::string> RunFilesWithoutTiming(const std::string& dir) {
+  std::map<std::string, std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir)) {
+    const std::string name = fs::relative(entry.path(), dir).string();
+    if (!entry.is_regular_file() || entry.path().filename() == "checkpoint.json" ||
+        entry.path().filename() == kLockFileName) {
+      continue;
+    }
+    std::string text = ReadFile(entry.path().string());
+    if (entry.path().extension() == ".csv") {
+      std::istringstream in(text);
+      text.clear();
+      for (std::string line; std::getline(in, line);) text += line.substr(0, line.rfind(',')) + "\n";
+    }
+    files[name] = text;
+  }
+  return files;
+}
+
+TEST_F(ReproductionTest, RunsSideBySideWriteTheSameFilesAsOneAtATime) {
+  ReproductionConfig c = Tiny();
+  c.generations = 3;
+  c.replicates = 2;
+  Reproduction(c, Dir("one"), StartMode::kNew).Run(Threads(1), {}, 1);
+  // every run at once, their children on two threads
+  int generations_reported = 0;
+  ReproductionObserver observer;
+  observer.on_generation = [&](const PlannedRun&, const GenerationSummary&) { ++generations_reported; };
+  Reproduction(c, Dir("side"), StartMode::kNew).Run(Threads(2), observer, 6);
+  EXPECT_EQ(generations_reported, 6 * 3);
+  const auto one = RunFilesWithoutTiming(Dir("one")), side = RunFilesWithoutTiming(Dir("side"));
+  EXPECT_EQ(one.size(), side.size());
+  for (const auto& [name, text] : one) {
+    ASSERT_TRUE(side.count(name)) << name;
+    // summary.json holds evaluation_seconds, summary.md the evaluation rate
+    if (name.rfind("summary", 0) == 0) continue;
+    EXPECT_EQ(text, side.at(name)) << name;
+  }
+  EXPECT_GE(one.size(), 6u * 5 + 3);
+}
+
+TEST_F(ReproductionTest, GrowsByResumingWithMoreReplicates) {
+  ReproductionConfig c = Tiny();
+  Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2), {}, 2);
+  const auto first = RunFilesWithoutTiming(Dir("r") + "/time-1");
+  c.replicates = 2;
+  std::vector<std::string> started;
+  ReproductionObserver observer;
+  observer.on_run_start = [&](const PlannedRun& run, int completed) {
+    if (completed == 0) started.push_back(run.name);
+  };
+  Reproduction(c, Dir("r"), StartMode::kResume).Run(Threads(2), observer, 3);
+  std::sort(started.begin(), started.end());
+  EXPECT_EQ(started, (std::vector<std::string>{"free-2", "performance-2", "time-2"}));
+  EXPECT_EQ(RunFilesWithoutTiming(Dir("r") + "/time-1"), first);
+  const auto summary = nlohmann::json::parse(ReadFile(Dir("r") + "/summary.json"));
+  EXPECT_EQ(summary.at("runs").size(), 6u);
 }
 
 }  // namespace

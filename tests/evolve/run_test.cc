@@ -12,11 +12,13 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/files.h"
+#include "tests/evolve/individuals.h"
 #include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
 namespace fs = std::filesystem;
+using testing::Threads;
 
 // A small, quick run: short evaluations, small population; the logic is the
 // full one.
@@ -55,7 +57,7 @@ class RunTest : public TempDirTest {
 };
 
 TEST_F(RunTest, WritesEveryFileWithTheDocumentedColumns) {
-  EvolutionRun run(SmallRun(), Dir("a"), StartMode::kNew, 2);
+  EvolutionRun run(SmallRun(), Dir("a"), StartMode::kNew, Threads(2));
   int reported = 0;
   run.Run([&](const GenerationSummary& s) { EXPECT_EQ(s.generation, reported++); });
   EXPECT_EQ(reported, 4);
@@ -87,24 +89,24 @@ TEST_F(RunTest, WritesEveryFileWithTheDocumentedColumns) {
 }
 
 TEST_F(RunTest, SameSeedGivesIdenticalFilesWithOneAndTwoThreads) {
-  EvolutionRun(SmallRun(), Dir("one"), StartMode::kNew, 1).Run();
-  EvolutionRun(SmallRun(), Dir("two"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(), Dir("one"), StartMode::kNew, Threads(1)).Run();
+  EvolutionRun(SmallRun(), Dir("two"), StartMode::kNew, Threads(2)).Run();
   ExpectSameRun(Dir("one"), Dir("two"));
   // and another seed gives another run
   RunConfig other = SmallRun();
   other.seed = 43;
-  EvolutionRun(other, Dir("other"), StartMode::kNew, 2).Run();
+  EvolutionRun(other, Dir("other"), StartMode::kNew, Threads(2)).Run();
   EXPECT_NE(WithoutTimingColumn(RunFiles(Dir("one")).evaluations),
             WithoutTimingColumn(RunFiles(Dir("other")).evaluations));
 }
 
 TEST_F(RunTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
-  EvolutionRun(SmallRun(), Dir("whole"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(), Dir("whole"), StartMode::kNew, Threads(2)).Run();
 
   // killed right after generation 1's checkpoint...
   struct Killed {};
   try {
-    EvolutionRun run(SmallRun(), Dir("killed"), StartMode::kNew, 2);
+    EvolutionRun run(SmallRun(), Dir("killed"), StartMode::kNew, Threads(2));
     run.Run([](const GenerationSummary& s) {
       if (s.generation == 1) throw Killed{};
     });
@@ -116,27 +118,27 @@ TEST_F(RunTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
   AppendDurably(f.evaluations, "2,0,1/3,0.5,0.1");
   AppendDurably(f.generations, "2,7.0,");
 
-  EvolutionRun resumed(SmallRun(), Dir("killed"), StartMode::kResume, 1);
+  EvolutionRun resumed(SmallRun(), Dir("killed"), StartMode::kResume, Threads(1));
   EXPECT_EQ(resumed.completed_generations(), 2);
   resumed.Run();
   ExpectSameRun(Dir("whole"), Dir("killed"));
 }
 
 TEST_F(RunTest, AResumedRunCanBeExtended) {
-  EvolutionRun(SmallRun(ScaffoldCase::kTime, 5), Dir("long"), StartMode::kNew, 2).Run();
-  EvolutionRun(SmallRun(ScaffoldCase::kTime, 3), Dir("short"), StartMode::kNew, 2).Run();
-  EvolutionRun extended(SmallRun(ScaffoldCase::kTime, 5), Dir("short"), StartMode::kResume, 2);
+  EvolutionRun(SmallRun(ScaffoldCase::kTime, 5), Dir("long"), StartMode::kNew, Threads(2)).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kTime, 3), Dir("short"), StartMode::kNew, Threads(2)).Run();
+  EvolutionRun extended(SmallRun(ScaffoldCase::kTime, 5), Dir("short"), StartMode::kResume, Threads(2));
   EXPECT_EQ(extended.completed_generations(), 3);
   extended.Run();
   ExpectSameRun(Dir("long"), Dir("short"));
 }
 
 TEST_F(RunTest, NeverOverwritesARunUnlessForced) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, Threads(2)).Run();
   const std::string before = ReadFile(RunFiles(Dir("a")).evaluations);
   std::ofstream(Dir("a") + "/notes.txt") << "mine";
   try {
-    EvolutionRun(SmallRun(), Dir("a"), StartMode::kNew, 2);
+    EvolutionRun(SmallRun(), Dir("a"), StartMode::kNew, Threads(2));
     FAIL() << "opened an existing run without --resume or --force";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("--resume"), std::string::npos) << e.what();
@@ -145,7 +147,7 @@ TEST_F(RunTest, NeverOverwritesARunUnlessForced) {
   // --force replaces the run's files, and only those
   RunConfig other = SmallRun(ScaffoldCase::kFree, 1);
   other.seed = 7;
-  EvolutionRun(other, Dir("a"), StartMode::kForce, 2).Run();
+  EvolutionRun(other, Dir("a"), StartMode::kForce, Threads(2)).Run();
   EXPECT_EQ(ReadFile(Dir("a") + "/notes.txt"), "mine");
   EXPECT_NE(ReadFile(RunFiles(Dir("a")).evaluations), before);
   EXPECT_FALSE(fs::exists(Dir("a") + "/replaced"));
@@ -163,12 +165,12 @@ std::map<std::string, std::string> RunFileContents(const std::string& dir) {
 }
 
 TEST_F(RunTest, ForceKeepsTheOldRunAsideUntilTheNewRunsFirstCheckpoint) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, Threads(2)).Run();
   const auto old_run = RunFileContents(Dir("a"));
   RunConfig other = SmallRun(ScaffoldCase::kFree, 2);
   other.seed = 7;
   {
-    EvolutionRun forced(other, Dir("a"), StartMode::kForce, 2);
+    EvolutionRun forced(other, Dir("a"), StartMode::kForce, Threads(2));
     // the old run is aside, whole; the new one has begun
     EXPECT_EQ(ReadFile(Dir("a") + "/replaced/evaluations.csv"), old_run.at("evaluations.csv"));
     EXPECT_EQ(ReadFile(Dir("a") + "/replaced/checkpoint.json"), old_run.at("checkpoint.json"));
@@ -177,7 +179,7 @@ TEST_F(RunTest, ForceKeepsTheOldRunAsideUntilTheNewRunsFirstCheckpoint) {
   // abandoned before its first generation: the old run is back, as it was
   EXPECT_EQ(RunFileContents(Dir("a")), old_run);
 
-  EvolutionRun forced(other, Dir("a"), StartMode::kForce, 2);
+  EvolutionRun forced(other, Dir("a"), StartMode::kForce, Threads(2));
   int generations = 0;
   forced.Run([&](const GenerationSummary&) {
     ++generations;
@@ -187,14 +189,14 @@ TEST_F(RunTest, ForceKeepsTheOldRunAsideUntilTheNewRunsFirstCheckpoint) {
 }
 
 TEST_F(RunTest, ForceWithAnImpossibleConfigurationLeavesTheOldRunIntact) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, Threads(2)).Run();
   const auto old_run = RunFileContents(Dir("a"));
   // one child a generation: generation 1 could not breed from an archive of one
   RunConfig impossible = SmallRun(ScaffoldCase::kFree, 3);
   impossible.ga.population = 1;
   impossible.ga.mutation_children = 1;
   try {
-    EvolutionRun(impossible, Dir("a"), StartMode::kForce, 2);
+    EvolutionRun(impossible, Dir("a"), StartMode::kForce, Threads(2));
     FAIL() << "started a run that cannot breed";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "population = 1 is outside its allowed range [2, 100000]");
@@ -230,13 +232,13 @@ TEST_F(RunTest, ValidateChecksEveryConstraintOfARun) {
 }
 
 TEST_F(RunTest, OneWriterPerRunDirectory) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, Threads(2)).Run();
   {
-    EvolutionRun first(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2);
+    EvolutionRun first(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, Threads(2));
     const auto before = RunFileContents(Dir("a"));
     for (StartMode mode : {StartMode::kResume, StartMode::kForce, StartMode::kNew}) {
       try {
-        EvolutionRun second(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), mode, 2);
+        EvolutionRun second(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), mode, Threads(2));
         FAIL() << "two writers on one run";
       } catch (const std::runtime_error& e) {
         const std::string expected =
@@ -247,7 +249,7 @@ TEST_F(RunTest, OneWriterPerRunDirectory) {
     EXPECT_EQ(RunFileContents(Dir("a")), before);
   }
   // released with its holder
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, Threads(2)).Run();
 }
 
 // the file with `change` applied to its text
@@ -261,13 +263,13 @@ class CheckpointTest : public RunTest {
  protected:
   void SetUp() override {
     RunTest::SetUp();
-    EvolutionRun(SmallRun(ScaffoldCase::kFree, 3), Dir("a"), StartMode::kNew, 2).Run();
+    EvolutionRun(SmallRun(ScaffoldCase::kFree, 3), Dir("a"), StartMode::kNew, Threads(2)).Run();
     files_ = RunFileContents(Dir("a"));
   }
   // the message of resuming the run, which must leave its files as they were
   std::string ResumeError() {
     try {
-      EvolutionRun(SmallRun(ScaffoldCase::kFree, 5), Dir("a"), StartMode::kResume, 2);
+      EvolutionRun(SmallRun(ScaffoldCase::kFree, 5), Dir("a"), StartMode::kResume, Threads(2));
     } catch (const std::runtime_error& e) {
       return e.what();
     }
@@ -361,19 +363,19 @@ TEST_F(CheckpointTest, AConfigWithADuplicatedOrUnknownKeyIsRefused) {
 }
 
 TEST_F(RunTest, ResumingNeverCreatesTheDirectory) {
-  EXPECT_THROW(EvolutionRun(SmallRun(), Dir("absent"), StartMode::kResume, 2), std::runtime_error);
+  EXPECT_THROW(EvolutionRun(SmallRun(), Dir("absent"), StartMode::kResume, Threads(2)), std::runtime_error);
   EXPECT_FALSE(fs::exists(Dir("absent")));
 }
 
 TEST_F(RunTest, AForceStoppedBeforeItsFirstCheckpointIsRecovered) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, Threads(2)).Run();
   const auto old_run = RunFileContents(Dir("a"));
   // stopped while setting the old run aside: half of it in replaced.partial/
   fs::create_directory(Dir("a") + "/replaced.partial");
   for (const char* name : {"checkpoint.json", "evaluations.csv"}) {
     fs::rename(Dir("a") + "/" + name, Dir("a") + "/replaced.partial/" + name);
   }
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2);  // moved back first
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, Threads(2));  // moved back first
   EXPECT_EQ(RunFileContents(Dir("a")), old_run);
   EXPECT_FALSE(fs::exists(Dir("a") + "/replaced.partial"));
 
@@ -382,42 +384,42 @@ TEST_F(RunTest, AForceStoppedBeforeItsFirstCheckpointIsRecovered) {
   for (const std::string& name : RunFiles::Names()) {
     fs::rename(Dir("a") + "/" + name, Dir("a") + "/replaced/" + name);
   }
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("fresh"), StartMode::kNew, 2);
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("fresh"), StartMode::kNew, Threads(2));
   fs::copy_file(Dir("fresh") + "/config.json", Dir("a") + "/config.json");
   try {
-    EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2);
+    EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, Threads(2));
     FAIL() << "resumed a stub, hiding the run it replaces";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("a --force was stopped"), std::string::npos) << e.what();
   }
   // --force again: the stub goes, the old run stays aside until the new checkpoint
   {
-    EvolutionRun forced(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kForce, 2);
+    EvolutionRun forced(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kForce, Threads(2));
     EXPECT_EQ(ReadFile(Dir("a") + "/replaced/evaluations.csv"), old_run.at("evaluations.csv"));
   }
   EXPECT_EQ(RunFileContents(Dir("a")), old_run);
 }
 
 TEST_F(RunTest, StaleTemporaryFilesOfKilledWritersAreRemoved) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, Threads(2)).Run();
   std::ofstream(Dir("a") + "/checkpoint.json.tmp.999999999") << "{";
   std::ofstream(Dir("a") + "/notes.tmp.txt") << "mine";
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, Threads(2)).Run();
   EXPECT_FALSE(fs::exists(Dir("a") + "/checkpoint.json.tmp.999999999"));
   EXPECT_TRUE(fs::exists(Dir("a") + "/notes.tmp.txt"));
 }
 
 TEST_F(RunTest, ResumingWithOtherSettingsIsRefused) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, Threads(2)).Run();
   RunConfig other = SmallRun(ScaffoldCase::kFree, 2);
   other.seed = 7;
   try {
-    EvolutionRun(other, Dir("a"), StartMode::kResume, 2);
+    EvolutionRun(other, Dir("a"), StartMode::kResume, Threads(2));
     FAIL() << "resumed with another seed";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("seed"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(EvolutionRun(SmallRun(), Dir("nothing-here"), StartMode::kResume, 2), std::runtime_error);
+  EXPECT_THROW(EvolutionRun(SmallRun(), Dir("nothing-here"), StartMode::kResume, Threads(2)), std::runtime_error);
   EXPECT_FALSE(fs::exists(Dir("nothing-here")));
 }
 
@@ -442,13 +444,13 @@ INSTANTIATE_TEST_SUITE_P(Learners, LearnerRunTest, ::testing::ValuesIn(LearnersB
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST_P(LearnerRunTest, SameSeedGivesIdenticalFilesWithOneAndTwoThreads) {
-  EvolutionRun(LearnerRun(), Dir("one"), StartMode::kNew, 1).Run();
-  EvolutionRun(LearnerRun(), Dir("two"), StartMode::kNew, 2).Run();
+  EvolutionRun(LearnerRun(), Dir("one"), StartMode::kNew, Threads(1)).Run();
+  EvolutionRun(LearnerRun(), Dir("two"), StartMode::kNew, Threads(2)).Run();
   ExpectSameRun(Dir("one"), Dir("two"));
   // the learner's children, not the GA's, from generation 1 on
   RunConfig ga = LearnerRun();
   ga.learner = "ga";
-  EvolutionRun(ga, Dir("ga"), StartMode::kNew, 2).Run();
+  EvolutionRun(ga, Dir("ga"), StartMode::kNew, Threads(2)).Run();
   EXPECT_NE(WithoutTimingColumn(RunFiles(Dir("one")).evaluations), WithoutTimingColumn(RunFiles(Dir("ga")).evaluations));
   std::istringstream rows(ReadFile(RunFiles(Dir("one")).evaluations));
   std::string line;
@@ -462,11 +464,11 @@ TEST_P(LearnerRunTest, SameSeedGivesIdenticalFilesWithOneAndTwoThreads) {
 }
 
 TEST_P(LearnerRunTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
-  EvolutionRun(LearnerRun(5), Dir("whole"), StartMode::kNew, 2).Run();
+  EvolutionRun(LearnerRun(5), Dir("whole"), StartMode::kNew, Threads(2)).Run();
   // killed after generation 2's checkpoint, while generation 3's rows were written
   struct Killed {};
   try {
-    EvolutionRun run(LearnerRun(5), Dir("killed"), StartMode::kNew, 2);
+    EvolutionRun run(LearnerRun(5), Dir("killed"), StartMode::kNew, Threads(2));
     run.Run([](const GenerationSummary& s) {
       if (s.generation == 2) throw Killed{};
     });
@@ -475,18 +477,18 @@ TEST_P(LearnerRunTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
   AppendDurably(RunFiles(Dir("killed")).evaluations, "3,0,cmaes,0.5,0.1");
   const nlohmann::json checkpoint = nlohmann::json::parse(ReadFile(RunFiles(Dir("killed")).checkpoint));
   EXPECT_TRUE(checkpoint.contains("learner")) << "the learner's state is in the checkpoint";
-  EvolutionRun resumed(LearnerRun(5), Dir("killed"), StartMode::kResume, 1);
+  EvolutionRun resumed(LearnerRun(5), Dir("killed"), StartMode::kResume, Threads(1));
   EXPECT_EQ(resumed.completed_generations(), 3);
   resumed.Run();
   ExpectSameRun(Dir("whole"), Dir("killed"));
 }
 
 TEST_P(LearnerRunTest, ResumingWithAnotherLearnerIsRefused) {
-  EvolutionRun(LearnerRun(1), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(LearnerRun(1), Dir("a"), StartMode::kNew, Threads(2)).Run();
   RunConfig ga = LearnerRun(2);
   ga.learner = "ga";
   try {
-    EvolutionRun(ga, Dir("a"), StartMode::kResume, 2);
+    EvolutionRun(ga, Dir("a"), StartMode::kResume, Threads(2));
     FAIL() << "resumed a " << GetParam() << " run with the GA";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("learner"), std::string::npos) << e.what();
@@ -494,13 +496,13 @@ TEST_P(LearnerRunTest, ResumingWithAnotherLearnerIsRefused) {
 }
 
 TEST_P(LearnerRunTest, ADamagedLearnerStateIsRefusedNamingTheField) {
-  EvolutionRun(LearnerRun(2), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(LearnerRun(2), Dir("a"), StartMode::kNew, Threads(2)).Run();
   const std::string path = RunFiles(Dir("a")).checkpoint;
   nlohmann::json checkpoint = nlohmann::json::parse(ReadFile(path));
   checkpoint["learner"]["unexpected"] = 1;
   std::ofstream(path) << checkpoint.dump();
   try {
-    EvolutionRun(LearnerRun(3), Dir("a"), StartMode::kResume, 2);
+    EvolutionRun(LearnerRun(3), Dir("a"), StartMode::kResume, Threads(2));
     FAIL() << "resumed with a damaged learner state";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path + ": "), std::string::npos) << e.what();
@@ -509,18 +511,18 @@ TEST_P(LearnerRunTest, ADamagedLearnerStateIsRefusedNamingTheField) {
 }
 
 TEST_F(RunTest, TheGasRunsDoNotNameTheirLearner) {
-  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, 2).Run();
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("a"), StartMode::kNew, Threads(2)).Run();
   EXPECT_FALSE(nlohmann::json::parse(ReadFile(RunFiles(Dir("a")).config)).contains("learner"));
   EXPECT_FALSE(nlohmann::json::parse(ReadFile(RunFiles(Dir("a")).checkpoint)).contains("learner"));
   RunConfig cmaes = SmallRun(ScaffoldCase::kFree, 2);
   cmaes.learner = "cmaes";
-  EXPECT_THROW(EvolutionRun(cmaes, Dir("a"), StartMode::kResume, 2), std::runtime_error);
+  EXPECT_THROW(EvolutionRun(cmaes, Dir("a"), StartMode::kResume, Threads(2)), std::runtime_error);
 }
 
 TEST_F(RunTest, AnUnwritableDirectoryIsAClearError) {
   std::ofstream(Dir("file")) << "x";
   try {
-    EvolutionRun(SmallRun(), Dir("file") + "/run", StartMode::kNew, 1);
+    EvolutionRun(SmallRun(), Dir("file") + "/run", StartMode::kNew, Threads(1));
     FAIL();
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("file/run"), std::string::npos) << e.what();

@@ -1,0 +1,215 @@
+#include "evolve/mpi_evaluator.h"
+
+#include <mpi.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+namespace walkers::mpi {
+namespace {
+
+// the messages between rank 0 and the others
+enum Tag : int { kTask = 1, kResult = 2, kStop = 3 };
+
+// how long a rank waits between looks for a message: far below an evaluation
+constexpr auto kPollInterval = std::chrono::microseconds(500);
+
+Session* g_session = nullptr;
+std::atomic<bool> g_rank_failed{false};
+// rank 0 calls MPI from several threads (MPI_THREAD_SERIALIZED): one at a time
+std::mutex g_mpi;
+
+// Bytes of plain values and strings, written and read in the same order.
+class Packer {
+ public:
+  template <typename T>
+  void operator()(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+  }
+  void operator()(const std::string& text) {
+    (*this)(static_cast<std::uint64_t>(text.size()));
+    bytes_ += text;
+  }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
+class Unpacker {
+ public:
+  explicit Unpacker(const std::vector<char>& bytes) : bytes_(bytes) {}
+  template <typename T>
+  void operator()(T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    Need(sizeof(T));
+    std::memcpy(&value, bytes_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+  }
+  void operator()(std::string& text) {
+    std::uint64_t size = 0;
+    (*this)(size);
+    Need(size);
+    text.assign(bytes_.data() + at_, size);
+    at_ += size;
+  }
+
+ private:
+  void Need(std::size_t n) const {
+    if (at_ + n > bytes_.size()) throw std::runtime_error("MPI: a message is shorter than its content");
+  }
+  const std::vector<char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+// Every field of a result, the one list both directions use.
+template <typename Archive, typename Result>
+void ResultFields(Archive& a, Result& r) {
+  a(r.fitness), a(r.distance), a(r.leg_length), a(r.fell), a(r.failure), a(r.footsteps);
+  a(r.trunk_contact_fraction), a(r.gait), a(r.sim_time), a(r.wall_ms), a(r.cvode_steps), a(r.rhs_evals);
+  a(r.integrator_stats), a(r.max_weld_drift), a(r.preset);
+}
+
+// the ranks run the same program on the same kind of machine: settings and
+// genomes travel as their bytes
+static_assert(std::is_trivially_copyable_v<EvaluationSettings>);
+static_assert(std::is_trivially_copyable_v<Genome>);
+
+std::vector<char> Receive(const MPI_Status& status) {
+  int count = 0;
+  MPI_Get_count(&status, MPI_BYTE, &count);
+  std::vector<char> bytes(static_cast<std::size_t>(count));
+  MPI_Recv(bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return bytes;
+}
+
+void Send(const std::string& bytes, int rank, Tag tag) {
+  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, rank, tag, MPI_COMM_WORLD);
+}
+
+// Rank 0's slot for `rank`: sends it the task and waits for its answer.
+void EvaluateOnRank(int rank, double timeout_s, const EvaluationTask& task) {
+  if (g_rank_failed) throw std::runtime_error("MPI: the job is ending after a rank failed");
+  Packer out;
+  out(task.preset->name), out(*task.settings), out(*task.genome);
+  {
+    std::lock_guard<std::mutex> lock(g_mpi);
+    Send(out.bytes(), rank, kTask);
+  }
+  const auto sent = std::chrono::steady_clock::now();
+  for (;;) {
+    {
+      std::lock_guard<std::mutex> lock(g_mpi);
+      int arrived = 0;
+      MPI_Status status;
+      MPI_Iprobe(rank, kResult, MPI_COMM_WORLD, &arrived, &status);
+      if (arrived) {
+        const std::vector<char> bytes = Receive(status);
+        Unpacker in(bytes);
+        ResultFields(in, *task.result);
+        return;
+      }
+    }
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+    if (waited > timeout_s) {
+      g_rank_failed = true;
+      throw std::runtime_error("MPI rank " + std::to_string(rank) + " has not answered for " +
+                               std::to_string(static_cast<long>(timeout_s)) +
+                               " s (--rank-timeout): it has hung or its node is lost; the job ends. Resume it with "
+                               "--resume: the last complete generation of every run is on disk");
+    }
+    std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
+}  // namespace
+
+bool LaunchedByLauncher() {
+  // Open MPI's mpirun, PMIx (srun --mpi=pmix, mpirun), PMI-1/2 (srun, MPICH)
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"}) {
+    if (std::getenv(name)) return true;
+  }
+  return false;
+}
+
+Session::Session(int* argc, char*** argv) {
+  int provided = 0;
+  MPI_Init_thread(argc, argv, MPI_THREAD_SERIALIZED, &provided);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  if (provided < MPI_THREAD_SERIALIZED && size_ > 1) {
+    if (rank_ == 0) std::fprintf(stderr, "walkers: error: this MPI library does not support MPI_THREAD_SERIALIZED\n");
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  g_session = this;
+}
+
+int Session::Finish(int status) {
+  if (finished_ || rank_ != 0) return status;
+  finished_ = true;
+  if (g_rank_failed) {
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, status == 0 ? 1 : status);  // a hung rank would never take a stop
+  }
+  for (int r = 1; r < size_; ++r) Send("", r, kStop);
+  return status;
+}
+
+Session::~Session() {
+  Finish(0);
+  g_session = nullptr;
+  MPI_Finalize();
+}
+
+Session* CurrentSession() { return g_session; }
+
+void ServeEvaluations() {
+  for (;;) {
+    int arrived = 0;
+    MPI_Status status;
+    MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
+    if (!arrived) {
+      std::this_thread::sleep_for(kPollInterval);
+      continue;
+    }
+    const std::vector<char> bytes = Receive(status);
+    if (status.MPI_TAG == kStop) return;
+    std::string preset_name;
+    EvaluationSettings settings;
+    Genome genome;
+    Unpacker in(bytes);
+    in(preset_name), in(settings), in(genome);
+    EvaluationResult result = Evaluate(genome, PresetByName(preset_name), settings);
+    Packer out;
+    ResultFields(out, result);
+    Send(out.bytes(), 0, kResult);
+  }
+}
+
+std::unique_ptr<Evaluator> MakeMpiEvaluator(int threads, double rank_timeout_s) {
+  std::vector<SlotEvaluator::Slot> slots;
+  for (int t = 0; t < threads; ++t) {
+    slots.push_back([](const EvaluationTask& task) {
+      *task.result = Evaluate(*task.genome, *task.preset, *task.settings);
+    });
+  }
+  for (int rank = 1; rank < g_session->size(); ++rank) {
+    slots.push_back([rank, rank_timeout_s](const EvaluationTask& task) { EvaluateOnRank(rank, rank_timeout_s, task); });
+  }
+  return std::make_unique<SlotEvaluator>(std::move(slots));
+}
+
+bool RankFailed() { return g_rank_failed; }
+
+}  // namespace walkers::mpi

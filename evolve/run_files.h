@@ -1,0 +1,134 @@
+// A run's files and their formats: config.json, checkpoint.json, the CSV
+// files' rows, archive.json; what they must hold to be read back, and the
+// checks a resume makes of them before anything is written.
+//
+// DIR/config.json       everything needed to rerun
+// DIR/generations.csv   one row per generation
+// DIR/evaluations.csv   one row per evaluation
+// DIR/checkpoint.json   the last complete generation (atomic; names the CSVs' sizes)
+// DIR/archive.json      the final archive, best first, with fitness
+// DIR/best.json         the best genome (a genome file)
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "control/evaluation.h"
+#include "control/preset.h"
+#include "evolve/genetic_algorithm.h"
+#include "evolve/learner.h"
+#include "evolve/scaffold.h"
+
+namespace walkers {
+
+constexpr int kMaxGenerations = 10000000;
+// Seeds are integers in [0, kMaxSeed].
+constexpr std::uint64_t kMaxSeed = 4294967295;
+
+struct RunConfig {
+  ScaffoldCase scaffold_case = ScaffoldCase::kFree;
+  std::string learner = DefaultLearner().name;  // Learners(): the paper's GA, or another
+  Preset preset = OriginalPreset();
+  int generations = 4000;
+  std::uint64_t seed = 1;
+  GeneticAlgorithmConfig ga;  // the GA's settings; its sizes are every learner's
+  EvaluationSettings evaluation;
+
+  // Checks every constraint a run needs from its first generation to its
+  // last, so that none fails on its configuration once begun. Throws
+  // std::invalid_argument naming the field and its allowed range.
+  void Validate() const;
+};
+
+// config.json's content. "learner" is written only for a learner other than
+// the paper's GA, so that the GA's runs keep their files.
+nlohmann::json RunConfigToJson(const RunConfig& config);
+// config.json's content: every field present, typed and in range, and no
+// other. Throws std::runtime_error whose message starts with `source`.
+RunConfig RunConfigFromJson(const nlohmann::json& json, const std::string& source);
+// The same from the file's text, parsed strictly (control/input_file.h).
+RunConfig ParseRunConfig(const std::string& text, const std::string& source);
+
+// What checkpoint.json holds: the run after its last complete generation.
+struct Checkpoint {
+  int completed_generations = 0;
+  double initial_fitness = 0;
+  std::uint64_t evaluations_bytes = 0;  // the CSV files' sizes after that generation
+  std::uint64_t generations_bytes = 0;
+  std::vector<Individual> archive;      // best first
+  nlohmann::json learner;               // the learner's state (Learner::State); null for the GA
+};
+
+nlohmann::json CheckpointToJson(const Checkpoint& checkpoint);
+// Parses a checkpoint of the run configured as `config` (its config.json)
+// strictly: every field present, typed and in range; at least one and at most
+// config.generations generations; the archive as large as that many
+// generations of config.ga fill it, best first, each member's generation and
+// child within the run and its genome valid; the learner's state, for a
+// learner that keeps one, one that learner restores (Learner::Restore).
+// Throws std::runtime_error whose message starts with `source` and names the
+// field.
+Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source);
+
+// archive.json of a finished run configured as `config`, checked as a
+// checkpoint's archive is. Throws std::runtime_error naming the file.
+std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& config);
+
+// What one generation did, for progress reports and generations.csv.
+struct GenerationSummary {
+  int generation = 0;
+  int generations = 0;          // of the run
+  double best_fitness = 0;      // archive's best after this generation
+  double ave_best3 = 0;
+  double archive_mean = 0;
+  double ceiling = 0;           // halfBodyX ceiling this generation's children had
+  double best_half_body_x = 0;
+  double best_femur = 0;
+  double best_tibia = 0;
+  Gait best_gait = Gait::kBiped;
+  int falls = 0;                // children that fell
+  int evaluations = 0;
+  double evaluation_seconds = 0;  // wall time of this generation's evaluations
+  double evals_per_s = 0;
+};
+
+// The file names of a run, inside its directory.
+struct RunFiles {
+  explicit RunFiles(const std::string& dir);
+  std::string dir, config, checkpoint, generations, evaluations, archive, best;
+
+  // every run file above (not dir)
+  static const std::vector<std::string RunFiles::*>& All();
+  // their names inside dir: "config.json", ...
+  static std::vector<std::string> Names();
+};
+
+// The CSV headers, for readers of the files.
+extern const char* const kGenerationsHeader;
+std::string EvaluationsHeader();
+
+// The rows a generation adds to evaluations.csv (one per child) and to
+// generations.csv.
+std::string EvaluationRow(const Individual& individual);
+std::string GenerationRow(const GenerationSummary& summary);
+
+// archive.json's content for a run of `completed` generations.
+nlohmann::json ArchiveFileJson(const RunConfig& config, int completed, double initial_fitness,
+                               const std::vector<Individual>& members);
+
+// The CSV files of the run in `files` up to the checkpoint's sizes, for a
+// resume: this program's headers, whole rows, the checkpoint's generations
+// in order, every archive member among the evaluations. Returns the genomes
+// evaluated so far. Throws std::runtime_error naming the file.
+std::set<GenomeKey> CheckRunFilesUpTo(const RunFiles& files, const Checkpoint& checkpoint, const RunConfig& config);
+
+// A run folder without checkpoint.json may start again only if the run had
+// not completed a generation: throws std::runtime_error saying what to do if
+// it has results beyond that.
+void CheckNoResultsWithoutCheckpoint(const RunFiles& files, const RunConfig& config);
+
+}  // namespace walkers
