@@ -47,8 +47,11 @@ inline std::vector<Variant> Variants() {
   add("dense_newton_matrix",
       [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kSchurComplement; });
   add("dense_linear_solver", [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kDense; });
-  add("no_restart_at_ticks", [](EvaluationSettings* s) { s->integrator.restart_on_torque_change = false; });
-  add("restart_with_last_step", [](EvaluationSettings* s) { s->integrator.restart_with_last_step = true; });
+  add("restart_every_tick", [](EvaluationSettings* s) { s->integrator.restart_on_torque_change = true; });
+  add("restart_every_tick_with_last_step", [](EvaluationSettings* s) {
+    s->integrator.restart_on_torque_change = true;
+    s->integrator.restart_with_last_step = true;
+  });
   add("velocity_atol_1e-3", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-3; });
   add("velocity_atol_1e-2", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-2; });
   add("tolerances_1e-5", [](EvaluationSettings* s) {

@@ -47,11 +47,12 @@ struct IntegratorSettings {
   long newton_matrix_max_age = 20;  // [steps]
   // Restart CVODE (back to order 1) whenever the held joint torques change,
   // that is at every controller tick: its history then never straddles a
-  // jump of the right-hand side, which costs fewer steps than letting the
-  // error test find the jump (docs/performance.md). Without it, when the error
-  // test cannot cope (its history still holds the old accelerations),
+  // jump of the right-hand side. It takes about 10 % fewer steps, but it
+  // fails the accuracy criterion on a stalled walker (docs/performance.md),
+  // so production leaves CVODE's history across the jumps; when its error
+  // test cannot cope (the history still holds the old accelerations),
   // AdvanceTo restarts at the jump and tries again. Switching a weld always restarts.
-  bool restart_on_torque_change = true;
+  bool restart_on_torque_change = false;
   // A restart begins with the step CVODE last took instead of its own estimate.
   bool restart_with_last_step = false;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
