@@ -334,7 +334,8 @@ bool MayTouch(const Model& model, const ContactPairSpec& spec, const BodyMotion<
   const Vec2 half_trunk(body.half_body_x, body.half_body_y), half_foot(body.half_foot_x, body.half_foot_y);
   const double radius = model.contact.knee_radius;
   const auto half_of = [&](ContactBody mesh) { return mesh == ContactBody::kTrunk ? half_trunk : half_foot; };
-  const double gap = Vec2(Value(a.p.x()) - Value(b.p.x()), Value(a.p.y()) - Value(b.p.y())).norm();
+  // the distance of the two reference points, for the pairs of two bodies
+  const auto gap = [&] { return Vec2(Value(a.p.x()) - Value(b.p.x()), Value(a.p.y()) - Value(b.p.y())).norm(); };
   switch (spec.law) {
     case ContactLaw::kMeshOnGround: {
       const Vec2 half = half_of(spec.b);
@@ -343,9 +344,9 @@ bool MayTouch(const Model& model, const ContactPairSpec& spec, const BodyMotion<
     case ContactLaw::kSphereOnGround:
       return Value(b.p.y()) < radius;
     case ContactLaw::kMeshOnMesh:
-      return gap < half_trunk.norm() + half_foot.norm();
+      return gap() < half_trunk.norm() + half_foot.norm();
     case ContactLaw::kMeshOnSphere:
-      return gap < half_of(spec.a).norm() + radius;
+      return gap() < half_of(spec.a).norm() + radius;
   }
   return true;
 }

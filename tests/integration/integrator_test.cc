@@ -31,6 +31,13 @@ Model GravityOnly() {
   return BuildModel(BodyOf(DefaultGenome()), options);
 }
 
+// Inputs with both feet planted where the state has them, no torques.
+Inputs BothFeetPlanted(const Model& m, const State& s) {
+  Inputs inputs;
+  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, s, leg);
+  return inputs;
+}
+
 double TotalEnergy(const Model& m, const State& s) {
   const Observation o = Observe(m, s);
   return o.kinetic + o.potential;
@@ -152,8 +159,7 @@ struct WeldDrift {
 
 WeldDrift RunPlanted(const Model& m, double duration) {
   const State start = StartState(m);
-  Inputs inputs;
-  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+  Inputs inputs = BothFeetPlanted(m, start);
   Integrator integrator(m);
   integrator.Reset(0.0, start, inputs);
   WeldDrift drift;
@@ -214,8 +220,7 @@ TEST(IntegratorTest, CountsStepsAndRightHandSidesAcrossRestarts) {
   const Model m = BuildModel(BodyOf(DefaultGenome()));
   Integrator integrator(m);
   const State start = StartState(m);
-  Inputs inputs;
-  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+  Inputs inputs = BothFeetPlanted(m, start);
   integrator.Reset(0.0, start, inputs);
   ASSERT_TRUE(integrator.AdvanceTo(0.5).ok());
   const IntegratorStats first = integrator.stats();
@@ -234,8 +239,7 @@ TEST(IntegratorTest, ANewStateIsTakenAtTheCurrentTimeWithARestart) {
   const Model m = BuildModel(BodyOf(DefaultGenome()));
   Integrator integrator(m);
   const State start = StartState(m);
-  Inputs inputs;
-  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+  Inputs inputs = BothFeetPlanted(m, start);
   integrator.Reset(0.0, start, inputs);
   ASSERT_TRUE(integrator.AdvanceTo(0.2).ok());
   // a jump, as a projection at planting makes: the walker given a push
@@ -259,8 +263,7 @@ TEST(IntegratorTest, RestartsAndRetriesWhenATorqueJumpDefeatsCvodesHistory) {
   settings.restart_on_torque_change = false;
   Integrator integrator(m, settings);
   const State start = StartState(m);
-  Inputs inputs;
-  for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+  Inputs inputs = BothFeetPlanted(m, start);
   integrator.Reset(0.0, start, inputs);
   for (int tick = 0; tick < 30; ++tick) {
     for (int i = kHipL; i < kNumCoords; ++i) inputs.joint_torque(i) = (tick % 2 ? 4000.0 : -4000.0) * (i % 3 + 1);
@@ -287,8 +290,7 @@ TEST(IntegratorTest, AStepObserverSeesEveryStepAndChangesNoBit) {
     Run out;
     Integrator integrator(m);
     if (observe) integrator.SetStepObserver([&](const StepInfo& step) { out.steps.push_back(step); });
-    Inputs inputs;
-    for (int leg = 0; leg < kNumLegs; ++leg) inputs.welds[leg] = PlantFoot(m, start, leg);
+    Inputs inputs = BothFeetPlanted(m, start);
     integrator.Reset(0.0, start, inputs);
     for (int tick = 0; tick < 30; ++tick) {
       if (tick == 10) inputs.welds[kLeft].active = false;  // a restart
