@@ -115,9 +115,8 @@ void AddContactForces(const Model& model, const Kinematics& kin, const Welds& we
 
 double LowestPointDepth(const Model& model, const Kinematics& kin) {
   double deepest = -std::numeric_limits<double>::infinity();
-  const auto deepest_site = [&](const std::vector<GroundSite>& sites, const PointKinematics& p,
-                                const AngleKinematics& a) {
-    for (const GroundSite& s : sites) deepest = std::max(deepest, -(p.p.y() + Rotate(a, s.p).y()));
+  const auto deepest_site = [&](const GroundMesh& mesh, const PointKinematics& p, const AngleKinematics& a) {
+    for (const GroundSite& s : mesh.sites()) deepest = std::max(deepest, -(p.p.y() + Rotate(a, s.p).y()));
   };
   deepest_site(model.sites.trunk_ground, kin.trunk, kin.pitch);
   for (const LegKinematics& l : kin.legs) {

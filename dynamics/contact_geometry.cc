@@ -116,13 +116,37 @@ std::vector<MeshTriangle> BrickMeshTriangles(const Vec3& half, int resolution) {
   return triangles;
 }
 
+GroundMesh::GroundMesh(std::vector<GroundSite> sites_sorted_by_x) : sites_(std::move(sites_sorted_by_x)) {
+  for (const GroundSite& site : sites_) {
+    heights_.push_back(site.p.y());
+    reach_x_ = std::max(reach_x_, std::abs(site.p.x()));
+  }
+  std::sort(heights_.begin(), heights_.end());
+  heights_.erase(std::unique(heights_.begin(), heights_.end()), heights_.end());
+  for (const double height : heights_) {
+    std::vector<GroundSite>& low = at_most_.emplace_back();
+    for (const GroundSite& site : sites_) {
+      if (site.p.y() <= height) low.push_back(site);
+    }
+  }
+}
+
+const std::vector<GroundSite>& GroundMesh::CanTouch(double cos, double sin, double y) const {
+  static const std::vector<GroundSite> kNone;
+  // turned by a right angle or more (or not finite): no bound
+  if (!(cos > 0.0)) return sites_;
+  // 1e-9 m covers the rounding of the bound and of each site's own test
+  const double highest = (-y + std::abs(sin) * reach_x_) / cos + 1e-9;
+  const auto above = std::upper_bound(heights_.begin(), heights_.end(), highest);
+  if (above == heights_.begin()) return kNone;
+  return at_most_[above - heights_.begin() - 1];
+}
+
 ContactSites BuildContactSites(const Vec3& half_trunk, const Vec3& half_foot, double leg_z, double knee_radius,
                                int resolution) {
   const std::vector<MeshTriangle> trunk = BrickMeshTriangles(half_trunk, resolution);
   const std::vector<MeshTriangle> foot = BrickMeshTriangles(half_foot, resolution);
   ContactSites s;
-  s.trunk_ground = GroundSites(trunk);
-  s.foot_ground = GroundSites(foot);
   for (int leg = 0; leg < kNumLegs; ++leg) {
     const double z = LegZ(leg, leg_z);
     s.trunk_in_foot[leg] = SitesInZRange(trunk, 0.0, z - half_foot.z(), z + half_foot.z());
@@ -134,8 +158,11 @@ ContactSites BuildContactSites(const Vec3& half_trunk, const Vec3& half_foot, do
   const auto by_x = [](auto* sites) {
     std::stable_sort(sites->begin(), sites->end(), [](const auto& a, const auto& b) { return a.p.x() < b.p.x(); });
   };
-  by_x(&s.trunk_ground);
-  by_x(&s.foot_ground);
+  std::vector<GroundSite> trunk_ground = GroundSites(trunk), foot_ground = GroundSites(foot);
+  by_x(&trunk_ground);
+  by_x(&foot_ground);
+  s.trunk_ground = GroundMesh(std::move(trunk_ground));
+  s.foot_ground = GroundMesh(std::move(foot_ground));
   by_x(&s.foot_in_knee);
   for (int leg = 0; leg < kNumLegs; ++leg) {
     by_x(&s.trunk_in_foot[leg]);

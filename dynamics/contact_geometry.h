@@ -39,6 +39,33 @@ struct GroundSite {
   double area = 0;        // [m^2]
 };
 
+// A box's ground sites (sorted by p.x), and the same sites grouped by how low
+// they sit in the box, for the right-hand side's sums: a site can be below the
+// ground only if it lies low enough in its box for the box's pose, and most of
+// a resting foot's sites never are.
+class GroundMesh {
+ public:
+  GroundMesh() = default;
+  explicit GroundMesh(std::vector<GroundSite> sites_sorted_by_x);
+
+  const std::vector<GroundSite>& sites() const { return sites_; }
+
+  // The sites that can be below the ground for a box turned by (cos, sin)
+  // with its reference point at height y, in the order of sites(): all sites
+  // at or below the one height the bound allows. In exact arithmetic a site
+  // (x, y_s) is below the ground iff y + sin x + cos y_s < 0, so for cos > 0
+  // only if y_s < (-y + |sin| max|x|) / cos; the sites left out are above the
+  // ground by far more than rounding, and summing the others in their order
+  // gives the full sum's bits.
+  const std::vector<GroundSite>& CanTouch(double cos, double sin, double y) const;
+
+ private:
+  std::vector<GroundSite> sites_;
+  std::vector<double> heights_;                   // the sites' distinct p.y, ascending
+  std::vector<std::vector<GroundSite>> at_most_;  // at_most_[k]: the sites with p.y <= heights_[k], in order
+  double reach_x_ = 0;                            // max |p.x| [m]
+};
+
 // A spring site that may be inside another box: the point, its area, and how
 // far its triangles' centroids are from the other box's nearer z face
 // (z_margin > 0: inside the other box's z extent). Where z_margin is the
@@ -62,8 +89,8 @@ struct SphereSite {
 // sorted by p.x, so that a contact law can go straight to the sites within
 // reach of the other body (SitesWithinX).
 struct ContactSites {
-  std::vector<GroundSite> trunk_ground;
-  std::vector<GroundSite> foot_ground;                   // the same for both feet
+  GroundMesh trunk_ground;
+  GroundMesh foot_ground;                                // the same for both feet
   std::array<std::vector<BoxSite>, kNumLegs> trunk_in_foot;   // trunk sites within the z extent of foot[leg]
   std::array<std::vector<BoxSite>, kNumLegs> foot_in_trunk;   // foot[leg] sites within the trunk's z extent
   std::array<std::vector<SphereSite>, kNumLegs> trunk_in_knee;  // trunk sites within reach of knee[leg]

@@ -151,13 +151,13 @@ bool FoundationNormal(const FoundationLaw& law, double area, const S& d, const S
 
 // ---- a brick mesh on the ground ----
 template <typename S>
-void MeshOnGround(const FoundationLaw& law, const std::vector<GroundSite>& sites, const BodyMotion<S>& body,
-                  Wrench<S>* w, ContactReport* r) {
+void MeshOnGround(const FoundationLaw& law, const GroundMesh& mesh, const BodyMotion<S>& body, Wrench<S>* w,
+                  ContactReport* r) {
   const double ca = Value(body.cos), sa = Value(body.sin);
   const S& c = body.cos;
   const S& s = body.sin;
   const double y = Value(body.p.y());
-  for (const GroundSite& site : sites) {
+  for (const GroundSite& site : mesh.CanTouch(ca, sa, y)) {
     // a site above the ground pushes nothing; tested in plain doubles, before any S arithmetic
     if (y + sa * site.p.x() + ca * site.p.y() >= 0.0) continue;
     const V2<S> r_site = Rotate<S>(c, s, site.p);
@@ -312,8 +312,8 @@ void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites
 // templates above stay the reference; the automatic differentiation of the
 // Jacobian runs them, and tests/dynamics/contact_test.cc checks that both agree.
 template <>
-void MeshOnGround<double>(const FoundationLaw& law, const std::vector<GroundSite>& sites,
-                          const BodyMotion<double>& body, Wrench<double>* w, ContactReport* r);
+void MeshOnGround<double>(const FoundationLaw& law, const GroundMesh& mesh, const BodyMotion<double>& body,
+                          Wrench<double>* w, ContactReport* r);
 template <>
 void MeshInBox<double>(const FoundationLaw& law, double scale, const std::vector<BoxSite>& sites,
                        const BodyMotion<double>& m, const BodyMotion<double>& o, const Vec2& half_o,

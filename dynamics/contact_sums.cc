@@ -19,13 +19,13 @@ Vec2 FromFrame(double c, double s, const Vec2& v) { return Vec2(c * v.x() - s * 
 }  // namespace
 
 template <>
-void MeshOnGround<double>(const FoundationLaw& law, const std::vector<GroundSite>& sites,
-                          const BodyMotion<double>& body, Wrench<double>* w, ContactReport* r) {
+void MeshOnGround<double>(const FoundationLaw& law, const GroundMesh& mesh, const BodyMotion<double>& body,
+                          Wrench<double>* w, ContactReport* r) {
   const double c = body.cos, s = body.sin;
   // in the world frame, about the body's reference point
   Vec2 F = Vec2::Zero();
   double T = 0.0;
-  for (const GroundSite& site : sites) {
+  for (const GroundSite& site : mesh.CanTouch(c, s, body.p.y())) {
     const double ry = s * site.p.x() + c * site.p.y();
     const double depth = -(body.p.y() + ry);
     if (depth <= 0.0) continue;

@@ -48,7 +48,7 @@ TEST(BrickMeshTest, TheNearestSpringsSitAThirdOfAQuadInFromTheEdges) {
   const ContactSites sites = BuildContactSites(half, Vec3(0.22, 0.05, 0.07), 0.25, 0.1, 6);
   const double quad = 2.0 * half.x() / 7.0;
   double outermost_bottom = 0.0, bottom_area = 0.0;
-  for (const GroundSite& s : sites.trunk_ground) {
+  for (const GroundSite& s : sites.trunk_ground.sites()) {
     if (s.p.y() != -half.y()) continue;
     outermost_bottom = std::max(outermost_bottom, std::abs(s.p.x()));
     bottom_area += s.area;
@@ -56,7 +56,46 @@ TEST(BrickMeshTest, TheNearestSpringsSitAThirdOfAQuadInFromTheEdges) {
   EXPECT_NEAR(outermost_bottom, half.x() - quad / 3.0, 1e-12);
   EXPECT_NEAR(bottom_area, 4.0 * half.x() * half.z(), 1e-12);
   // every bottom site carries the triangles of all three quads along z
-  EXPECT_EQ(sites.trunk_ground.size(), 14u + 14u + 2u * 2u + 7u * 4u);
+  EXPECT_EQ(sites.trunk_ground.sites().size(), 14u + 14u + 2u * 2u + 7u * 4u);
+}
+
+// The sums visit only the sites low enough in their box to be below the
+// ground: none that is below may be left out, the order stays, and a flat foot
+// just touching the ground visits its bottom row alone.
+TEST(GroundMeshTest, LeavesOutOnlySitesAboveTheGroundAndKeepsTheirOrder) {
+  const Vec3 half_foot(0.1215, 0.0501, 0.0719);
+  const GroundMesh& mesh = BuildContactSites(Vec3(0.6, 0.13, 0.3), half_foot, 0.25, 0.1, 6).foot_ground;
+  const auto below = [](const std::vector<GroundSite>& sites, double c, double s, double y) {
+    std::vector<const GroundSite*> out;
+    for (const GroundSite& site : sites) {
+      if (y + s * site.p.x() + c * site.p.y() < 0.0) out.push_back(&site);
+    }
+    return out;
+  };
+  const auto same = [](const std::vector<const GroundSite*>& a, const std::vector<const GroundSite*>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i) {
+      if (a[i]->p != b[i]->p || a[i]->area != b[i]->area) return false;
+    }
+    return true;
+  };
+  int poses = 0, touching = 0;
+  for (double angle = -3.0; angle <= 3.0; angle += 0.0137) {
+    for (double y = -0.06; y <= 0.14; y += 0.0031) {
+      const double c = std::cos(angle), s = std::sin(angle);
+      const std::vector<const GroundSite*> all = below(mesh.sites(), c, s, y);
+      EXPECT_TRUE(same(below(mesh.CanTouch(c, s, y), c, s, y), all)) << "angle " << angle << " y " << y;
+      ++poses;
+      touching += !all.empty();
+    }
+  }
+  EXPECT_GT(touching, poses / 4);
+
+  size_t bottom_row = 0;
+  for (const GroundSite& site : mesh.sites()) bottom_row += site.p.y() == -half_foot.y();
+  EXPECT_EQ(mesh.CanTouch(1.0, 0.0, half_foot.y() - 1e-4).size(), bottom_row);
+  EXPECT_LT(bottom_row, mesh.sites().size() / 3);
+  EXPECT_TRUE(mesh.CanTouch(1.0, 0.0, half_foot.y() + 1e-4).empty());
 }
 
 // ---- the laws, combined from the materials as Simbody combines them ----

@@ -49,7 +49,7 @@ TEST(ModelTest, AShortTrunksBottomIsTwoRowsOfSprings) {
   b.half_body_x = 0.05;
   const Model m = BuildModel(b);
   std::vector<double> xs;
-  for (const GroundSite& s : m.sites.trunk_ground) {
+  for (const GroundSite& s : m.sites.trunk_ground.sites()) {
     if (s.p.y() == -b.half_body_y) xs.push_back(s.p.x());
   }
   std::sort(xs.begin(), xs.end());
