@@ -127,6 +127,12 @@ def compared_finals(claim, text, runs, case_x, case_y):
     return None, finals(of_case(runs, case_x)), finals(of_case(runs, case_y))
 
 
+def two_sample_effect(name, statistic, x, y):
+    """An effect of x against y: statistic(x, y) with its bootstrap interval."""
+    return {"name": name, "value": float(statistic(x, y)),
+            "interval": bootstrap_interval((x, y), statistic)}
+
+
 def finding(claim, text, p, effect, direction, null, paper, n, line_numbers, extra=None):
     """A claim's JSON entry, with its verdict and its line."""
     v = verdict(p, effect["interval"], direction, null, paper, n)
@@ -150,21 +156,20 @@ def claim_case3_above_case1(rep):
     if gap:
         return gap
     u, p, exact = rank_sum_test(x, y, "greater")
-    delta = {"name": "Cliff's delta", "value": float(cliffs_delta(x, y)),
-             "interval": bootstrap_interval((x, y), cliffs_delta)}
-    shift_ci = bootstrap_interval((x, y), hodges_lehmann)
-    shift = float(hodges_lehmann(x, y))
+    delta = two_sample_effect("Cliff's delta", cliffs_delta, x, y)
+    shift = two_sample_effect("Hodges-Lehmann shift", hodges_lehmann, x, y)
     numbers = (f"final best {np.mean(x):.2f} against {np.mean(y):.2f} (means of the re-scored "
                f"medians), Cliff's δ = "
                f"{delta['value']:+.2f} {fmt_interval(delta['interval'], '{:+.2f}')}, "
-               f"Hodges–Lehmann shift {shift:+.2f} {fmt_interval(shift_ci, '{:+.2f}')}; "
+               f"Hodges–Lehmann shift {shift['value']:+.2f} "
+               f"{fmt_interval(shift['interval'], '{:+.2f}')}; "
                f"one-sided Mann–Whitney U = {u:g}, p = {fmt_p(p)}")
     test = {"name": "Mann-Whitney U, one-sided (case 3 > case 1)", "statistic": u, "p": p,
             "exact": exact}
     return finding("case3_above_case1", text, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
                    numbers, {"test": test, "n": [len(x), len(y)],
-                             "hodges_lehmann": {"value": shift,
-                                                "interval": json_interval(shift_ci)}})
+                             "hodges_lehmann": {"value": shift["value"],
+                                                "interval": json_interval(shift["interval"])}})
 
 
 def claim_case3_leads_generations(rep):
@@ -204,9 +209,8 @@ def claim_case2_below_case1(rep):
     if gap:
         return gap
     u, p, exact = rank_sum_test(x, y, "less")
-    ratio = {"name": "ratio of the final mean best fitness (re-scored medians), case 2 / case 1",
-             "value": float(ratio_of_means(x, y)),
-             "interval": bootstrap_interval((x, y), ratio_of_means)}
+    ratio = two_sample_effect("ratio of the final mean best fitness (re-scored medians), "
+                              "case 2 / case 1", ratio_of_means, x, y)
     numbers = (f"case 2's final mean best is {100 * ratio['value']:.1f} % of case 1's "
                f"{fmt_interval(ratio['interval'], '{:.1f}', 100, ' %')}, Cliff's δ = "
                f"{float(cliffs_delta(x, y)):+.2f}; one-sided Mann–Whitney U = {u:g}, "
@@ -304,9 +308,8 @@ def claim_case2_later_biped(rep):
     x = [time_to_biped(r, True, never) for r in of_case(runs, c2)]
     y = [time_to_biped(r, True, never) for r in of_case(runs, c1)]
     u, p, exact = rank_sum_test(x, y, "greater")
-    delta = {"name": "Cliff's delta of the generation of a biped for good, case 2 vs case 1",
-             "value": float(cliffs_delta(x, y)),
-             "interval": bootstrap_interval((x, y), cliffs_delta)}
+    delta = two_sample_effect("Cliff's delta of the generation of a biped for good, case 2 vs "
+                              "case 1", cliffs_delta, x, y)
     numbers = (f"median generation {fmt_generation(median_time(x), never)} against "
                f"{fmt_generation(median_time(y), never)} (never: {x.count(never)} and "
                f"{y.count(never)}), Cliff's δ = {delta['value']:+.2f} "
