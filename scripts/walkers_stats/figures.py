@@ -565,7 +565,9 @@ def finals(runs, scaffolds, out_dir):
     left.set_ylim(bottom=0)
     left.legend(handles=[Line2D([], [], ls="", marker=m, markerfacecolor="none",
                                 markeredgecolor=GAIT_COLOURS[g], label=f"ends as a {g}")
-                         for g, m in (("biped", "o"), ("tripod", "^"))],
+                         for g, m in (("biped", "o"), ("tripod", "^"))] +
+                [Line2D([], [], ls="", marker="|", markersize=10, color="0.4",
+                        label="range of the re-scores")],
                 loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=2, borderaxespad=0.0)
     right.set_ylabel("runs ending as a tripod")
     right.set_ylim(0, 1.15)
