@@ -20,6 +20,7 @@
 #include "control/step_profile.h"
 #include "dynamics/observation.h"
 #include "evolve/files.h"
+#include "evolve/finals.h"  // kMaxEnsemble
 
 namespace walkers::app {
 namespace {
@@ -139,7 +140,7 @@ void AddEvaluateCommand(CLI::App& app, Command* selected) {
   sub->add_option("--ensemble", opt->ensemble,
                   "Also evaluate N times with the relative tolerance scaled by 1 + k 1e-4 and report the "
                   "fitness's spread (the walk can be chaotic; docs/performance.md, Accuracy)")
-      ->check(IntegerRange(1, 1000));
+      ->check(IntegerRange(1, kMaxEnsemble));
   sub->callback([opt, selected] { *selected = [opt] { return RunEvaluate(*opt); }; });
 }
 

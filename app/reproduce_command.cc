@@ -1,17 +1,20 @@
-// walkers reproduce: the paper's three cases with replicates, their
-// statistics beside the paper's, and its figures.
+// walkers reproduce: the paper's three cases with replicates, their finals
+// re-scored, then the statistics beside the paper's (and beside the authors'
+// own runs, given a checkout of their repository) and its figures.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/evaluators.h"
-#include "app/validators.h"
-#include "app/figures.h"
 #include "app/progress.h"
+#include "app/statistics.h"
+#include "app/validators.h"
 #include "evolve/reproduction.h"
 
 namespace walkers::app {
@@ -25,6 +28,8 @@ struct ReproduceOptions {
   EvaluatorOptions evaluator;
   int runs_at_once = 0;  // 0: as many as the evaluator makes evaluations at once
   std::uint64_t seed = 1;
+  int ensemble = ReproductionConfig{}.ensemble;
+  std::string authors_checkout;  // "": none given
   std::string out;
   StartFlags start;
 };
@@ -36,7 +41,17 @@ int RunReproduce(const ReproduceOptions& opt) {
   config.generations = opt.generations;
   config.replicates = opt.replicates;
   config.seed = opt.seed;
+  config.ensemble = opt.ensemble;
   config.Validate();
+  // the statistics' options; a checkout they cannot read is refused before any run
+  std::vector<std::string> authors;
+  if (!opt.authors_checkout.empty()) {
+    authors = {"--authors", opt.authors_checkout};
+    if (RunStatistics({"authors", opt.authors_checkout}) != 0) {
+      throw std::runtime_error("--authors-checkout " + opt.authors_checkout +
+                               ": the statistics cannot read the authors' runs there (see above)");
+    }
+  }
   const std::unique_ptr<Evaluator> evaluator = MakeEvaluator(opt.evaluator);
   const int runs_at_once = opt.runs_at_once > 0 ? opt.runs_at_once : evaluator->slots();
 
@@ -63,6 +78,10 @@ int RunReproduce(const ReproduceOptions& opt) {
     generations_left -= std::min(completed, run.config.generations);
     progress[run.name] = std::make_unique<Progress>(run.name);
   };
+  observer.on_rescore = [&](int done, int needed) {
+    finish_lines();
+    std::fprintf(stderr, "re-scored %d of %d finals (ensembles of %d)\n", done, needed, config.ensemble);
+  };
   observer.on_generation = [&](const PlannedRun& run, const GenerationSummary& s) {
     --generations_left;
     ++generations_done;
@@ -77,35 +96,26 @@ int RunReproduce(const ReproduceOptions& opt) {
   Reproduction reproduction(config, opt.out, opt.start.mode());
   std::fprintf(stderr, "%d runs, %d at once, on %s\n", total, std::min(runs_at_once, total),
                DescribeEvaluator(opt.evaluator).c_str());
-  const ReproductionSummary summary = reproduction.Run(*evaluator, observer, runs_at_once);
+  reproduction.Run(*evaluator, observer, runs_at_once);
   finish_lines();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%d runs and their finals; this session %s\n", total, FormatDuration(seconds).c_str());
 
-  std::printf("%d runs, %ld evaluations (%.1f per second of evaluation time); this session %s\n", total,
-              summary.evaluations,
-              summary.evaluation_seconds > 0 ? summary.evaluations / summary.evaluation_seconds : 0.0,
-              FormatDuration(seconds).c_str());
-  if (summary.best_biped) {
-    std::printf("best biped %.3f (%s %s)\n", summary.best_biped->fitness, summary.best_biped->run.c_str(),
-                summary.best_biped->id.c_str());
+  // the summary first: the figures may fail without taking the verdicts with them
+  std::vector<std::string> summary = {"summary", opt.out}, figures = {"figures", opt.out};
+  summary.insert(summary.end(), authors.begin(), authors.end());
+  figures.insert(figures.end(), authors.begin(), authors.end());
+  const int summarized = RunStatistics(summary);
+  if (summarized != 0) {
+    std::fprintf(stderr, "walkers: error: the statistics failed (exit status %d); %s/summary.md is not up to date\n",
+                 summarized, opt.out.c_str());
   }
-  if (summary.best_tripod) {
-    std::printf("best tripod %.3f (%s %s)\n", summary.best_tripod->fitness, summary.best_tripod->run.c_str(),
-                summary.best_tripod->id.c_str());
+  const int drawn = RunStatistics(figures);
+  if (drawn != 0) {
+    std::fprintf(stderr, "walkers: error: the figures failed (exit status %d); the statistics are in %s/summary.md\n",
+                 drawn, opt.out.c_str());
   }
-  // the claims first: the figures may fail without taking the verdicts with them
-  const int claims = WriteClaims(opt.out);
-  if (claims != 0) {
-    std::fprintf(stderr, "walkers: error: the claims script failed (exit status %d); %s/summary.md has no verdicts\n",
-                 claims, opt.out.c_str());
-  }
-  const int status = DrawFigures(opt.out);
-  if (status != 0) {
-    std::fprintf(stderr, "walkers: error: the figure script failed (exit status %d); the statistics are in %s/summary.md\n",
-                 status, opt.out.c_str());
-    return 1;
-  }
-  if (claims != 0) return 1;
+  if (summarized != 0 || drawn != 0) return 1;
   std::printf("summary: %s/summary.md, figures: %s/figures/\n", opt.out.c_str(), opt.out.c_str());
   return 0;
 }
@@ -133,6 +143,15 @@ void AddReproduceCommand(CLI::App& app, Command* selected) {
                   "Runs advanced side by side, sharing the threads (default: as many as threads, or MPI ranks)")
       ->check(IntegerRange(1, 1024));
   AddSeedOption(sub, &opt->seed, "Seed of replicate 1; replicate r uses seed + r - 1");
+  sub->add_option("--ensemble", opt->ensemble,
+                  "Evaluate each run's final best, best biped and best tripod again N times (relative tolerance "
+                  "scaled by 1 + k 1e-4); the claims about final fitness use the medians")
+      ->check(IntegerRange(1, kMaxEnsemble))
+      ->capture_default_str();
+  sub->add_option("--authors-checkout", opt->authors_checkout,
+                  "A checkout of the authors' repository: their nine runs beside ours in Fig. 9 and the summary "
+                  "(their CaseData/image/fitness-data; nothing of theirs is copied)")
+      ->check(CLI::ExistingDirectory);
   sub->add_option("--out", opt->out, "Reproduction directory")->required();
   AddStartFlags(sub, &opt->start, "the reproduction");
   sub->callback([opt, selected] { *selected = [opt] { return RunReproduce(*opt); }; });

@@ -25,6 +25,7 @@ void ReproductionConfig::Validate() const {
     }
   }
   RequireInRange("replicates", replicates, 1, kMaxReplicates);
+  RequireInRange("ensemble", ensemble, 1, kMaxEnsemble);
   if (seed > kMaxSeed - static_cast<std::uint64_t>(replicates - 1)) {
     throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
                                 std::to_string(kMaxSeed - (replicates - 1)) + "] for " + std::to_string(replicates) +
@@ -34,16 +35,19 @@ void ReproductionConfig::Validate() const {
 }
 
 ReproductionFiles::ReproductionFiles(const std::string& dir)
-    : summary_json((fs::path(dir) / "summary.json").string()),
-      summary_md((fs::path(dir) / "summary.md").string()),
+    : manifest((fs::path(dir) / "reproduction.json").string()),
+      rescores((fs::path(dir) / "rescores.json").string()),
       walks((fs::path(dir) / "walks.json").string()),
       gallery((fs::path(dir) / "gallery.json").string()),
+      summary_json((fs::path(dir) / "summary.json").string()),
+      summary_md((fs::path(dir) / "summary.md").string()),
       figures((fs::path(dir) / "figures").string()) {}
 
 std::vector<std::string> ReproductionFiles::Names() {
   const ReproductionFiles files("");
   std::vector<std::string> names;
-  for (const std::string* f : {&files.summary_json, &files.summary_md, &files.walks, &files.gallery, &files.figures}) {
+  for (const std::string* f : {&files.manifest, &files.rescores, &files.walks, &files.gallery, &files.summary_json,
+                               &files.summary_md, &files.figures}) {
     names.push_back(fs::path(*f).filename().string());
   }
   return names;
@@ -79,18 +83,14 @@ std::vector<std::string> ReproductionNames(const std::string& dir) {
   return names;
 }
 
-// "ga, cmaes"
-std::string Joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 }  // namespace
 
 json ScaffoldsJson() {
   json out = json::array();
-  for (const ScaffoldSpec& s : Scaffolds()) out.push_back({{"name", s.name}, {"label", s.label}, {"colour", s.colour}});
+  for (const ScaffoldSpec& s : Scaffolds()) {
+    out.push_back(
+        {{"name", s.name}, {"label", s.label}, {"colour", s.colour}, {"paper_tripod_finals", s.paper_tripod_finals}});
+  }
   return out;
 }
 
@@ -157,7 +157,7 @@ Reproduction::Reproduction(const ReproductionConfig& config, const std::string& 
 // replaced_ goes first, while the lock is still held
 Reproduction::~Reproduction() = default;
 
-ReproductionSummary Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observer, int runs_at_once) {
+void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observer, int runs_at_once) {
   // Runs side by side: each of `runs_at_once` threads takes the next run of
   // the plan and advances it generation by generation, all of them handing
   // their children to the one evaluator, so that its workers have another
@@ -209,120 +209,110 @@ ReproductionSummary Reproduction::Run(Evaluator& evaluator, const ReproductionOb
   runner();
   for (std::thread& t : side_by_side) t.join();
   if (error) std::rethrow_exception(error);
-  return WriteReproductionResults(config_, dir_);
+  WriteReproductionData(config_, dir_, evaluator, observer.on_rescore);
 }
 
-ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir) {
+namespace {
+
+// A finalist for reproduction.json: {"id", "fitness" (recorded), "gait", "rescore"}
+json FinalistJson(const Individual& finalist, const RescoreCache& rescores) {
+  return {{"id", finalist.id()},
+          {"fitness", finalist.fitness()},
+          {"gait", GaitName(finalist.result.gait)},
+          {"rescore", RescoreJson(*rescores.Find(finalist.genome), finalist.fitness())}};
+}
+
+// the better of two finalists by their re-scores' medians (the first of equals)
+bool RescoredAbove(const Individual& a, const Individual& b, const RescoreCache& rescores) {
+  return rescores.Find(a.genome)->Median() > rescores.Find(b.genome)->Median();
+}
+
+}  // namespace
+
+void WriteReproductionData(const ReproductionConfig& config, const std::string& dir, Evaluator& evaluator,
+                           const std::function<void(int done, int needed)>& on_rescore) {
   const std::vector<PlannedRun> plan = PlanRuns(config);
-  const std::string& primary = config.learners.front();
-  std::vector<RunData> data, primary_data;
-  const auto fitness_or_null = [](const std::optional<EvaluatedSummary>& best) {
-    return best ? json(best->fitness) : json(nullptr);
-  };
-  json runs = json::array(), learner_runs = json::array();
-  json gallery = json::array();
+  const ReproductionFiles files(dir);
+  std::vector<RunFinals> finals;
+  std::vector<Genome> genomes;
   for (const PlannedRun& run : plan) {
-    const std::string run_dir = (fs::path(dir) / run.name).string();
-    data.push_back(LoadRunData(run_dir, run.scaffold_case, run.replicate, run.name));
-    data.back().learner = run.config.learner;
-    const json run_json = {{"case", ScaffoldCaseName(run.scaffold_case)},
-                           {"replicate", run.replicate},
-                           {"dir", run.name},
-                           {"seed", run.config.seed},
-                           {"final_best_fitness", data.back().best_fitness.back()},
-                           {"final_best_gait", data.back().best_is_tripod.back() ? "tripod" : "biped"},
-                           // the best of all the run's evaluations, by gait (null: none that did not fall)
-                           {"best_biped_fitness", fitness_or_null(data.back().best_biped)},
-                           {"best_tripod_fitness", fitness_or_null(data.back().best_tripod)},
-                           {"evaluations", data.back().evaluations},
-                           {"evaluation_seconds", data.back().evaluation_seconds}};
-    json with_learner = run_json;
-    with_learner["learner"] = run.config.learner;
-    learner_runs.push_back(with_learner);
-    // the paper's statistics, walks, gallery and figures 4-9: the first learner's
-    if (run.config.learner != primary) continue;
-    primary_data.push_back(data.back());
-    runs.push_back(run_json);
-    // the gallery, standing: the run's final best and, when that is a biped,
-    // the best tripod the run evaluated
-    const Individual best = LoadArchive(RunFiles(run_dir).archive, run.config).front();
-    const auto add_to_gallery = [&](const std::string& label, const std::string& id, const std::string& gait,
-                                    double fitness, const Genome& genome) {
-      gallery.push_back({{"label", label},
-                         {"run", run.name},
-                         {"id", id},
-                         {"gait", gait},
-                         {"fitness", fitness},
-                         {"body", BodyJson(BuildModel(BodyOf(genome)))},
-                         {"pose", StartPoseJson(genome)}});
-    };
-    add_to_gallery(run.name + " best", best.id(), GaitName(best.result.gait), best.fitness(), best.genome);
-    const std::optional<EvaluatedSummary>& tripod = data.back().best_tripod;
-    if (best.result.gait != Gait::kTripod && tripod) {
-      add_to_gallery(run.name + " tripod", tripod->id, "tripod", tripod->fitness, tripod->genome);
+    finals.push_back(LoadRunFinals((fs::path(dir) / run.name).string(), run.config));
+    for (const std::optional<Individual>& f : {std::optional<Individual>(finals.back().final_best),
+                                               finals.back().best_biped, finals.back().best_tripod}) {
+      if (f) genomes.push_back(f->genome);
     }
   }
-  const ReproductionSummary summary = Summarize(primary_data);
-  // every learner's runs, each learner's apart
-  std::vector<LearnerSummary> by_learner;
-  for (const std::string& learner : config.learners) {
-    std::vector<RunData> of_learner;
-    for (const RunData& d : data) {
-      if (d.learner == learner) of_learner.push_back(d);
+  // every run's three finals again, but those re-scored before
+  RescoreCache rescores(files.rescores, config.preset, config.evaluation, config.ensemble);
+  rescores.Rescore(genomes, evaluator, std::max(1, evaluator.slots()), on_rescore);
+
+  const std::string& primary = config.learners.front();
+  json runs = json::array(), gallery = json::array();
+  std::optional<std::pair<std::string, Individual>> best_biped, best_tripod;  // (run, finalist) of the first learner
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const PlannedRun& run = plan[i];
+    const RunFinals& f = finals[i];
+    const auto finalist_or_null = [&](const std::optional<Individual>& x) {
+      return x ? FinalistJson(*x, rescores) : json(nullptr);
+    };
+    runs.push_back({{"learner", run.config.learner},
+                    {"case", ScaffoldCaseName(run.scaffold_case)},
+                    {"replicate", run.replicate},
+                    {"dir", run.name},
+                    {"seed", run.config.seed},
+                    {"final_best", FinalistJson(f.final_best, rescores)},
+                    {"best_biped", finalist_or_null(f.best_biped)},
+                    {"best_tripod", finalist_or_null(f.best_tripod)}});
+    // the walks and the gallery: the first learner's
+    if (run.config.learner != primary) continue;
+    for (auto [best, of_run] : {std::pair{&best_biped, &f.best_biped}, std::pair{&best_tripod, &f.best_tripod}}) {
+      if (*of_run && (!*best || RescoredAbove(**of_run, (*best)->second, rescores))) {
+        *best = std::make_pair(run.name, **of_run);
+      }
     }
-    by_learner.push_back({learner, Summarize(of_learner)});
+    // the gallery, standing: the run's final best and, when that is a biped,
+    // the best tripod the run evaluated
+    const auto add_to_gallery = [&](const std::string& label, const Individual& who) {
+      gallery.push_back({{"label", label},
+                         {"run", run.name},
+                         {"id", who.id()},
+                         {"gait", GaitName(who.result.gait)},
+                         {"fitness", who.fitness()},
+                         {"body", BodyJson(BuildModel(BodyOf(who.genome)))},
+                         {"pose", StartPoseJson(who.genome)}});
+    };
+    add_to_gallery(run.name + " best", f.final_best);
+    if (f.final_best.result.gait != Gait::kTripod && f.best_tripod) add_to_gallery(run.name + " tripod", *f.best_tripod);
   }
 
   // the best biped's and the best tripod's walks, again, frame by frame
   json walks = {{"biped", nullptr}, {"tripod", nullptr}};
-  for (const auto& [key, best] : {std::pair{"biped", summary.best_biped}, std::pair{"tripod", summary.best_tripod}}) {
-    if (!best) continue;
-    RecordedWalk walk = RecordWalk(best->genome, config.preset,
-                                   std::string("best ") + key + ": " + best->run + " " + best->id, config.evaluation);
-    walk.json["run"] = best->run;
-    walk.json["id"] = best->id;
+  json picks = {{"biped", nullptr}, {"tripod", nullptr}};
+  for (const auto& [key, best] : {std::pair{"biped", &best_biped}, std::pair{"tripod", &best_tripod}}) {
+    if (!*best) continue;
+    const auto& [run, who] = **best;
+    RecordedWalk walk =
+        RecordWalk(who.genome, config.preset, std::string("best ") + key + ": " + run + " " + who.id(), config.evaluation);
+    walk.json["run"] = run;
+    walk.json["id"] = who.id();
     walks[key] = walk.json;
+    picks[key] = {{"run", run}, {"id", who.id()}};
   }
 
-  json out = SummaryToJson(summary);
-  out["preset"] = config.preset.name;
-  out["generations"] = config.generations;
-  out["replicates"] = config.replicates;
-  out["seed"] = config.seed;
-  out["scaffolds"] = ScaffoldsJson();  // the figures' list of cases
-  out["runs"] = runs;                  // the first learner's
-  out["learners"] = LearnersJson(config.learners);
-  out["learner_comparison"] = LearnersToJson(by_learner);
-  out["learner_runs"] = learner_runs;  // every learner's
-  const ReproductionFiles files(dir);
-  WriteFileAtomically(files.summary_json, out.dump(2) + "\n");
+  const json manifest = {{"preset", config.preset.name},
+                         {"generations", config.generations},
+                         {"replicates", config.replicates},
+                         {"seed", config.seed},
+                         {"population", config.ga.population},
+                         {"ensemble", config.ensemble},
+                         {"scaffolds", ScaffoldsJson()},
+                         {"learners", LearnersJson(config.learners)},
+                         {"runs", runs},
+                         {"best_biped", picks["biped"]},
+                         {"best_tripod", picks["tripod"]}};
+  WriteFileAtomically(files.manifest, manifest.dump(2) + "\n");
   WriteFileAtomically(files.walks, walks.dump() + "\n");
   WriteFileAtomically(files.gallery, json{{"individuals", gallery}}.dump(2) + "\n");
-
-  const bool compared = config.learners.size() > 1;
-  std::string title = "Reproduction: " + std::to_string(config.replicates) + " replicate(s) x " +
-                      std::to_string(config.generations) + " generations, preset " + config.preset.name;
-  if (compared) title += ", learners " + Joined(config.learners);
-  std::string md = SummaryToMarkdown(summary, title);
-  if (compared) {
-    md += "\nThe tables above are the " + std::string(LearnerByName(primary).label) + "'s (" + primary +
-          "): its runs alone.\n\n" + LearnersToMarkdown(by_learner) + "\n![learners](figures/learners.png)\n";
-  }
-  md += "\n## Figures\n\n";
-  for (const char* fig : {"fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals"}) {
-    md += std::string("![") + fig + "](figures/" + fig + ".png)\n";
-  }
-  WriteFileAtomically(files.summary_md, md);
-  // the evaluations of every learner's runs
-  ReproductionSummary returned = summary;
-  returned.evaluations = returned.falls = 0;
-  returned.evaluation_seconds = 0;
-  for (const RunData& d : data) {
-    returned.evaluations += d.evaluations;
-    returned.falls += d.falls;
-    returned.evaluation_seconds += d.evaluation_seconds;
-  }
-  return returned;
 }
 
 }  // namespace walkers

@@ -1,15 +1,19 @@
 // A reproduction of the paper's results: the three scaffolds, each with
-// several replicate runs of each learner, then their statistics and the data
-// of the figures.
+// several replicate runs of each learner, then what the statistics and the
+// figures need of the simulator.
 //
 // DIR/<case>-<replicate>/   one evolution run each (evolve/run.h) of the GA;
 // DIR/<learner>-<case>-<replicate>/  of another learner (evolve/learner.h)
-// DIR/summary.json          statistics beside the paper's values (evolve/analysis.h)
-// DIR/summary.md            the same as tables a person reads
+// DIR/reproduction.json     the configuration, the cases and learners, and every
+//                           run's finals with their re-scores (evolve/finals.h)
+// DIR/rescores.json         the re-scores' cache, by genome
 // DIR/walks.json            the best biped's and best tripod's walks (control/walk_record.h)
 // DIR/gallery.json          every run's final best and, if that is a biped, its
 //                           best tripod, standing, to scale
-// DIR/figures/              drawn by scripts/figures.py (app/figures.h)
+// DIR/summary.json          the statistics and the claims' verdicts, and
+// DIR/summary.md            the same as tables a person reads: written from the
+//                           files above by scripts/walkers_stats (app/statistics.h)
+// DIR/figures/              drawn by scripts/walkers_stats too
 // DIR/walkers.lock          locked by the one process writing the reproduction
 // DIR/replaced/             while --force replaces a reproduction: the old one,
 //                           until the new first run's first checkpoint is written
@@ -26,8 +30,8 @@
 
 #include "control/evaluation.h"
 #include "control/preset.h"
-#include "evolve/analysis.h"
 #include "evolve/evaluator.h"
+#include "evolve/finals.h"
 #include "evolve/genetic_algorithm.h"
 #include "evolve/run.h"
 
@@ -45,17 +49,19 @@ struct ReproductionConfig {
   std::uint64_t seed = 1;  // replicate r of every case runs with seed + r - 1
   GeneticAlgorithmConfig ga;
   EvaluationSettings evaluation;
+  int ensemble = 25;  // members of each final's re-score (evolve/finals.h)
 
   // Every run's configuration (RunConfig::Validate), seed + replicates - 1
-  // within the seeds' range, and at least one learner, none twice. Throws
-  // std::invalid_argument naming the field.
+  // within the seeds' range, at least one learner, none twice, and the
+  // ensemble's size in [1, kMaxEnsemble]. Throws std::invalid_argument naming
+  // the field.
   void Validate() const;
 };
 
 // The files of a reproduction's results, inside its directory.
 struct ReproductionFiles {
   explicit ReproductionFiles(const std::string& dir);
-  std::string summary_json, summary_md, walks, gallery, figures;
+  std::string manifest, rescores, walks, gallery, summary_json, summary_md, figures;
 
   // their names inside the directory
   static std::vector<std::string> Names();
@@ -70,18 +76,20 @@ struct PlannedRun {
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config);
 
-// The scaffolds as summary.json lists them for the figure script: name, label
-// and colour of each, in the paper's order.
+// The scaffolds as reproduction.json lists them for the statistics: name,
+// label, colour and the paper's tripods of each, in the paper's order.
 nlohmann::json ScaffoldsJson();
 // The reproduction's learners, likewise, in the order given.
 nlohmann::json LearnersJson(const std::vector<std::string>& learners);
 
 // Called before each run starts (with how many generations it has done) and
 // after each of its generations; with runs side by side, from their threads,
-// one call at a time.
+// one call at a time. Then, while the finals are re-scored, after each batch
+// of genomes (how many are done of those that were not in the cache).
 struct ReproductionObserver {
   std::function<void(const PlannedRun&, int completed_generations)> on_run_start;
   std::function<void(const PlannedRun&, const GenerationSummary&)> on_generation;
+  std::function<void(int done, int needed)> on_rescore;
 };
 
 // A reproduction in a directory. It holds the directory's lock from
@@ -99,11 +107,10 @@ class Reproduction {
   ~Reproduction();
 
   // Runs (or resumes) every run, `runs_at_once` of them side by side, their
-  // evaluations on `evaluator`; then writes the summary and figure data.
-  // Returns WriteReproductionResults's summary. The files do not depend on
-  // the evaluator or on runs_at_once. When a run fails, the others stop
-  // after their generation under way and its error is thrown.
-  ReproductionSummary Run(Evaluator& evaluator, const ReproductionObserver& observer = {}, int runs_at_once = 1);
+  // evaluations on `evaluator`; then WriteReproductionData. The files do not
+  // depend on the evaluator or on runs_at_once. When a run fails, the others
+  // stop after their generation under way and its error is thrown.
+  void Run(Evaluator& evaluator, const ReproductionObserver& observer = {}, int runs_at_once = 1);
 
  private:
   ReproductionConfig config_;
@@ -113,10 +120,11 @@ class Reproduction {
   std::unique_ptr<SetAside> replaced_;  // under kForce, until the first checkpoint
 };
 
-// Only the analysis: reads the finished runs in DIR and writes summary.json,
-// summary.md, walks.json and gallery.json. Returns the first learner's
-// summary (the paper's statistics), but with the evaluations, falls and
-// evaluation time of every learner's runs.
-ReproductionSummary WriteReproductionResults(const ReproductionConfig& config, const std::string& dir);
+// After the runs: reads every finished run's finals in DIR, re-scores them on
+// `evaluator` (those not in DIR/rescores.json already), and writes
+// reproduction.json, walks.json (the first learner's best biped and best
+// tripod by their re-scores' medians) and gallery.json.
+void WriteReproductionData(const ReproductionConfig& config, const std::string& dir, Evaluator& evaluator,
+                           const std::function<void(int done, int needed)>& on_rescore = nullptr);
 
 }  // namespace walkers

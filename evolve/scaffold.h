@@ -1,7 +1,7 @@
 // The three scaffolds (paper §2.5, MODEL.md §5): each bounds the body-length
 // gene halfBodyX from above, by generation or by performance. Scaffolds() is
-// the one list of them: the command line, the run plan, the analysis and
-// (through summary.json) the figures read it.
+// the one list of them: the command line and the run plan read it, and the
+// statistics and the figures through reproduction.json.
 #pragma once
 
 #include <memory>

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The main job, short: set up, build, evolve the three scaffolds for 30
-# generations (one replicate each) with progress on the terminal, then write
-# the statistics and the paper's figures to runs/demo/.
+# The main job, short: set up, build the program (only what the demo runs),
+# evolve the three scaffolds for 30 generations (one replicate each) with
+# progress on the terminal, re-score their finals, then write the statistics
+# and the paper's figures to runs/demo/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
-./scripts/build.sh
+./scripts/build.sh walkers
 # run again, the demo continues (or only redraws) what an earlier one left
 again=()
 [ -d runs/demo ] && again=(--resume)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Wall time per evaluation of a small reproduction (3 cases x 2 replicates x
 # G generations, 96·G evaluations), from the command's start to the last
-# run's archive.json (the claims and figures are skipped), in one session:
+# run's archive.json (the finals are re-scored by ensembles of one, the
+# statistics and figures skipped), in one session:
 #   scaling.sh side-by-side [G] [ROUNDS]   --runs-at-once 2 against 1 on 2 threads, alternating
 #   scaling.sh ranks [G]                    1 and 2 threads, mpirun -n 1, 2 and 3
 #   scaling.sh idle DIR                     of a reproduction made one run at a time on 2 threads:
@@ -52,7 +53,7 @@ measure() {
   read -ra launcher <<<"$2"
   read -ra options <<<"$3"
   start=$(date +%s.%N)
-  "${launcher[@]}" "$walkers" reproduce --generations "$generations" --replicates 2 "${options[@]}" --out "$dir" \
+  "${launcher[@]}" "$walkers" reproduce --generations "$generations" --replicates 2 --ensemble 1 "${options[@]}" --out "$dir" \
     >"$dir.log" 2>&1 </dev/null
   end=$(stat -c %.9Y "$dir"/*/archive.json | sort -n | tail -1)
   python3 -c "print(f'$label: {($end - $start) / (96 * $generations) * 1000:.1f} ms per evaluation ({$end - $start:.1f} s), $dir')"

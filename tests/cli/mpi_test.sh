@@ -83,7 +83,7 @@ grep -q -- '--case: bogus not in {free,time,performance}' "$tmp/bad.txt" || { ca
 echo "ok: bad arguments refused by rank 0"
 
 # a tiny reproduction (two replicates, so ranks share whole runs)
-rep=(reproduce --generations 2 --replicates 2 --seed 2)
+rep=(reproduce --generations 2 --replicates 2 --seed 2 --ensemble 3)
 "$walkers" "${rep[@]}" --threads 1 --runs-at-once 1 --out "$tmp/rep-one" >"$tmp/rep-one.txt" 2>&1 ||
   { cat "$tmp/rep-one.txt"; fail "reproduce in one process"; }
 "${mpi[@]}" "$walkers" "${rep[@]}" --out "$tmp/rep-mpi" >"$tmp/rep-mpi.txt" 2>&1 ||

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# A tiny reproduction (3 generations, 1 replicate) must write every file and the
-# claims' verdicts, the same when redone; the
-# replay command's HTML must load in headless Chromium without console errors
-# and draw its canvas, and its SVG must parse.
+# A tiny reproduction (3 generations, 1 replicate, finals re-scored by ensembles
+# of 3) must write every file and the claims' verdicts, the same when redone, and
+# set the authors' runs (a stand-in checkout) beside ours; the replay command's
+# HTML must load in headless Chromium without console errors and draw its canvas,
+# and its SVG must parse.
 # Usage: reproduce_test.sh WALKERS_BINARY SOURCE_DIR PYTHON
 set -u
 walkers=$1
@@ -13,12 +14,14 @@ trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --threads 2 --out "$tmp/rep" >"$tmp/out.txt" 2>&1 ||
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --threads 2 --ensemble 3 --out "$tmp/rep" \
+  >"$tmp/out.txt" 2>&1 ||
   { cat "$tmp/out.txt"; fail "walkers reproduce exited non-zero"; }
 # progress: each run's time left and that of all runs
 grep -Eq '^free-1 gen 1/3 .* [0-9hms]+ left, all runs [0-9hms]+$' "$tmp/out.txt" ||
   { cat "$tmp/out.txt"; fail "no progress line with the time left for all runs"; }
-for f in summary.json summary.md walks.json gallery.json; do
+grep -q '^re-scored [0-9]* of [0-9]* finals (ensembles of 3)$' "$tmp/out.txt" || fail "no progress line of the re-scores"
+for f in reproduction.json rescores.json summary.json summary.md walks.json gallery.json; do
   [ -s "$tmp/rep/$f" ] || fail "no $f"
 done
 for run in free-1 time-1 performance-1; do
@@ -34,13 +37,37 @@ done
 "$python" - "$tmp/rep" <<'PY' || fail "summary.json lacks a statistic"
 import json, sys
 s = json.load(open(sys.argv[1] + "/summary.json"))
-for key in ("cases", "case3_over_case1_share", "case2_over_case1_final", "biped_over_tripod", "runs", "evals_per_s"):
+for key in ("claims", "beside_authors", "rescores", "runs", "best_biped", "evals_per_s"):
     assert key in s, key
-assert set(s["cases"]) == {"free", "time", "performance"}, s["cases"].keys()
+assert set(s["claims"]["cases"]) == {"free", "time", "performance"}, s["claims"]["cases"].keys()
 assert len(s["runs"]) == 3
+assert s["beside_authors"]["checkout"] is None and "no checkout" in s["beside_authors"]["note"]
 PY
-# the claims: a verdict line each, in summary.json and summary.md, whose numbers agree
-# with the program's own statistics; at one replicate nothing can be reproduced
+# the finals re-scored by this build: the unperturbed member scores what the run
+# recorded, and the claims' final bests are the ensembles' medians
+"$python" - "$tmp/rep" <<'PY' || fail "the re-scores do not hold or do not match"
+import json, statistics, sys
+rep = sys.argv[1]
+m = json.load(open(rep + "/reproduction.json"))
+s = json.load(open(rep + "/summary.json"))
+assert m["ensemble"] == 3
+for run in m["runs"]:
+    archive = json.load(open(f"{rep}/{run['dir']}/archive.json"))["archive"][0]
+    assert run["final_best"]["id"] == archive["id"] and run["final_best"]["fitness"] == archive["fitness"], run
+    for key in ("final_best", "best_biped", "best_tripod"):
+        f = run[key]
+        if f is None:
+            continue
+        assert len(f["rescore"]["fitness"]) == 3 and f["rescore"]["fitness"][1] == f["fitness"], (run["dir"], key)
+        assert f["rescore"]["recorded_reproduced"] is True, (run["dir"], key)
+        assert f["rescore"]["median"] == statistics.median(f["rescore"]["fitness"]), (run["dir"], key)
+for case, c in s["claims"]["cases"].items():
+    medians = [r["final_best"]["rescore"]["median"] for r in m["runs"] if r["case"] == case]
+    assert abs(c["final_best"]["mean"] - sum(medians) / len(medians)) <= 1e-12, case
+assert s["rescores"]["not_reproduced"] == []
+PY
+# the claims: a verdict line each, in summary.json and summary.md; at one
+# replicate nothing can be reproduced
 "$python" - "$tmp/rep" <<'PY' || fail "the claims block does not hold or does not match"
 import json, sys
 rep = sys.argv[1]
@@ -53,17 +80,10 @@ for f in findings.values():
     assert f"- {f['line']}\n" in md, f["line"]
 assert findings["case3_above_case1"]["verdict"] == "inconclusive at n = 1"
 assert md.index("## Claims") < md.index("## Figures"), "no Claims section before the figures"
-def close(a, b):
-    return abs(a - b) <= 1e-12 * max(1.0, abs(b))
-assert close(findings["case3_leads_generations"]["effect"]["value"], s["case3_over_case1_share"]["value"])
-assert close(findings["case2_below_case1"]["effect"]["value"], s["case2_over_case1_final"]["value"])
-if s["biped_over_tripod"]["value"] is not None:
-    assert close(findings["biped_above_tripod"]["effect"]["value"], s["biped_over_tripod"]["value"] - 1)
+assert findings["case3_leads_generations"]["effect"]["value"] == s["beside_authors"]["case3_leads_share"]["ours"]
 for case, c in s["claims"]["cases"].items():
-    assert c["tripod_finals"]["tripods"] == s["cases"][case]["tripod_finals"], case
-for run in s["runs"]:
-    for gait in ("biped", "tripod"):
-        assert f"best_{gait}_fitness" in run, run
+    tripods = sum(r["final_best"]["gait"] == "tripod" for r in s["runs"] if r["case"] == case)
+    assert c["tripod_finals"]["tripods"] == tripods, case
 PY
 cp "$tmp/rep/summary.json" "$tmp/summary.first.json"
 cp "$tmp/rep/summary.md" "$tmp/summary.first.md"
@@ -85,9 +105,11 @@ for run in ("free-1", "time-1", "performance-1"):
     else:
         assert len(mine) == 1, (run, mine)
 PY
-# resuming a finished reproduction redoes only the statistics and figures;
-# a second process on the folder meanwhile is refused at once
-WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume >"$tmp/again.txt" 2>&1 &
+# resuming a finished reproduction redoes only the statistics and figures (the
+# re-scores come from the cache); a second process on the folder meanwhile is
+# refused at once
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ensemble 3 --out "$tmp/rep" --resume \
+  >"$tmp/again.txt" 2>&1 &
 again=$!
 for _ in $(seq 100); do grep -q "done already" "$tmp/again.txt" && break; sleep 0.1; done
 second=$(WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" --resume 2>&1) &&
@@ -96,18 +118,54 @@ grep -q "rep: another walkers process (pid $again) is writing this reproduction"
   fail "the second reproduce was not refused naming the first: $second"
 wait $again || { cat "$tmp/again.txt"; fail "resuming the finished reproduction failed"; }
 grep -q "done already" "$tmp/again.txt" || fail "resume did not find the runs done"
+grep -q "^re-scored" "$tmp/again.txt" && fail "resume re-scored the finals again"
 # the statistics and claims again: the same bits (the bootstrap is seeded)
 cmp -s "$tmp/summary.first.json" "$tmp/rep/summary.json" || fail "summary.json changed when redone"
 cmp -s "$tmp/summary.first.md" "$tmp/rep/summary.md" || fail "summary.md changed when redone"
 grep -q "inconclusive at n = 1" "$tmp/again.txt" || fail "reproduce did not print the verdicts"
 "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" >/dev/null 2>&1 && fail "overwrote a reproduction without --resume"
-# a failing claims script is reported, the figures are drawn all the same, the exit status is 1
-printf 'import sys\nsys.exit(3)\n' >"$tmp/failing_claims.py"
+# a failing summary is reported, the figures are drawn all the same, the exit status is 1
+mkdir "$tmp/failing_stats"
+cat >"$tmp/failing_stats/__main__.py" <<PY
+import runpy, sys
+if sys.argv[1] == "summary":
+    sys.exit(3)
+runpy.run_path("$src/scripts/walkers_stats", run_name="__main__")
+PY
 rm -f "$tmp/rep/figures/fig9.png"
-out=$(WALKERS_PYTHON=$python WALKERS_CLAIMS_SCRIPT="$tmp/failing_claims.py" "$walkers" reproduce --generations 3 \
-      --replicates 1 --out "$tmp/rep" --resume 2>&1) && fail "reproduce succeeded with a failing claims script"
-grep -q "the claims script failed (exit status 3)" <<<"$out" || fail "no message for the failing claims script: $out"
-[ -s "$tmp/rep/figures/fig9.png" ] || fail "the figures were not drawn after the claims script failed"
+out=$(WALKERS_PYTHON=$python WALKERS_STATS="$tmp/failing_stats" "$walkers" reproduce --generations 3 --replicates 1 \
+      --ensemble 3 --out "$tmp/rep" --resume 2>&1) && fail "reproduce succeeded with a failing summary"
+grep -q "the statistics failed (exit status 3)" <<<"$out" || fail "no message for the failing summary: $out"
+[ -s "$tmp/rep/figures/fig9.png" ] || fail "the figures were not drawn after the summary failed"
+
+# the authors' runs beside ours, from a checkout named (a stand-in: their
+# fitness-data format, three runs a case); a folder without them is refused
+# before any run starts
+data="$tmp/authors/CaseData/image/fitness-data"
+mkdir -p "$data"
+for c in 1 2 3; do
+  for m in 1 2 3; do printf '0,\n%d\ncount: 2\n1.5,\n%d.25\ncount: 2\n' "$m" "$((c + m))" >"$data/case$c-$m.txt"; done
+done
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ensemble 3 --out "$tmp/rep" --resume \
+  --authors-checkout "$tmp/authors" >"$tmp/authors.txt" 2>&1 || { cat "$tmp/authors.txt"; fail "reproduce --authors-checkout failed"; }
+grep -q "^9 runs of the authors: case 1: 3, case 2: 3, case 3: 3$" "$tmp/authors.txt" || fail "the authors' runs were not counted"
+"$python" - "$tmp/rep" "$tmp/authors" <<'PY' || fail "the authors' runs are not beside ours"
+import json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))
+b = s["beside_authors"]
+assert b["checkout"] == sys.argv[2] and b["note"] is None, b
+# generation 2 of case 1: run 1 improved to 2.25 at generation 1, run 2 to 3.25
+# at 2, run 3 not yet (1.5)
+row = next(r for r in b["at_generations"] if r["case"] == "free" and r["generation"] == 2)
+assert row["authors"] == {"mean": (2.25 + 3.25 + 1.5) / 3, "runs": 3}, row
+assert row["ours"]["runs"] == 1
+PY
+grep -q "the authors" "$tmp/rep/figures/fig9.svg" || fail "fig9 does not show the authors' runs"
+out=$("$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/new" --authors-checkout "$tmp/rep" 2>&1) &&
+  fail "reproduce accepted a checkout without the authors' runs"
+grep -q "fitness-data/" <<<"$out" && grep -q -- "--authors-checkout $tmp/rep: the statistics cannot read" <<<"$out" ||
+  fail "no message naming the checkout: $out"
+[ ! -e "$tmp/new" ] || fail "a refused checkout still started the reproduction"
 
 # --force: an impossible configuration leaves the reproduction intact; a
 # possible one replaces it, and keeps nothing of the old once it has begun

@@ -29,6 +29,7 @@ ReproductionConfig Tiny(std::uint64_t seed = 5) {
   c.ga.archive_size = 2;
   c.ga.mutation_children = 1;
   c.evaluation.duration = 0.5;
+  c.ensemble = 3;
   return c;
 }
 
@@ -46,7 +47,7 @@ class ReproductionTest : public TempDirTest {
 
 TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
   Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
-  const std::string summary = ReadFile(ReproductionFiles(Dir("r")).summary_json);
+  const std::string manifest = ReadFile(ReproductionFiles(Dir("r")).manifest);
   EXPECT_NE(Error([&] { Reproduction(Tiny(), Dir("r"), StartMode::kNew); }).find("holds a reproduction already"),
             std::string::npos);
   {
@@ -56,7 +57,7 @@ TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
               std::string::npos)
         << error;
   }
-  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).manifest), manifest);
   EXPECT_NE(Error([&] { Reproduction(Tiny(), Dir("absent"), StartMode::kResume); }).find("no reproduction to resume"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(Dir("absent")));
@@ -64,22 +65,22 @@ TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
 
 TEST_F(ReproductionTest, ForceKeepsTheOldReproductionUntilTheFirstNewCheckpoint) {
   Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
-  const std::string summary = ReadFile(ReproductionFiles(Dir("r")).summary_json);
+  const std::string manifest = ReadFile(ReproductionFiles(Dir("r")).manifest);
   const std::string evaluations = ReadFile(Dir("r") + "/time-1/evaluations.csv");
   std::ofstream(Dir("r") + "/notes.txt") << "mine";
   {
     Reproduction forced(Tiny(6), Dir("r"), StartMode::kForce);
-    EXPECT_FALSE(fs::exists(Dir("r") + "/summary.json"));
+    EXPECT_FALSE(fs::exists(ReproductionFiles(Dir("r")).manifest));
     EXPECT_EQ(ReadFile(Dir("r") + "/replaced/time-1/evaluations.csv"), evaluations);
   }
   // abandoned before it began: the old reproduction is back
-  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).manifest), manifest);
   EXPECT_EQ(ReadFile(Dir("r") + "/time-1/evaluations.csv"), evaluations);
   EXPECT_FALSE(fs::exists(Dir("r") + "/replaced"));
 
   Reproduction(Tiny(6), Dir("r"), StartMode::kForce).Run(Threads(2));
   EXPECT_FALSE(fs::exists(Dir("r") + "/replaced"));
-  EXPECT_NE(ReadFile(ReproductionFiles(Dir("r")).summary_json), summary);
+  EXPECT_NE(ReadFile(ReproductionFiles(Dir("r")).manifest), manifest);
   EXPECT_EQ(ReadFile(Dir("r") + "/notes.txt"), "mine");  // not the reproduction's
 }
 
@@ -96,17 +97,26 @@ TEST_F(ReproductionTest, ValidatesEveryRunsConfigurationFirst) {
   EXPECT_FALSE(fs::exists(Dir("r")));
 }
 
-// the claims script's input: each run's best biped and best tripod over all its
-// evaluations (those that did not fall), null for none
-TEST_F(ReproductionTest, SummaryListsEachRunsBestBipedAndBestTripod) {
+// the statistics' input: each run's final best and its best biped and best
+// tripod over all its evaluations (those that did not fall), null for none,
+// each with the recorded fitness and its re-score
+TEST_F(ReproductionTest, ReproductionJsonListsEachRunsFinalsAndTheirRescores) {
   ReproductionConfig c = Tiny();
   c.generations = 2;
   c.evaluation.duration = 2.0;
   Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2));
-  const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
-  ASSERT_EQ(summary["runs"].size(), 3u);
+  const nlohmann::json manifest = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
+  EXPECT_EQ(manifest.at("ensemble"), 3);
+  EXPECT_EQ(manifest.at("population"), 2);
+  EXPECT_EQ(manifest.at("scaffolds").size(), Scaffolds().size());
+  EXPECT_EQ(manifest.at("scaffolds")[1].at("paper_tripod_finals"), Scaffolds()[1].paper_tripod_finals);
+  ASSERT_EQ(manifest["runs"].size(), 3u);
   int found = 0;
-  for (const nlohmann::json& run : summary["runs"]) {
+  for (const nlohmann::json& run : manifest["runs"]) {
+    const nlohmann::json archive = nlohmann::json::parse(ReadFile(Dir("r") + "/" + run["dir"].get<std::string>() +
+                                                                  "/archive.json"));
+    EXPECT_EQ(run["final_best"]["id"], archive["archive"][0]["id"]);
+    EXPECT_EQ(run["final_best"]["fitness"], archive["archive"][0]["fitness"]);
     const std::string path = Dir("r") + "/" + run["dir"].get<std::string>() + "/evaluations.csv";
     CsvReader rows(ReadFile(path), path);
     const int fitness = rows.Column("fitness"), fell = rows.Column("fell"), gait = rows.Column("gait");
@@ -116,17 +126,61 @@ TEST_F(ReproductionTest, SummaryListsEachRunsBestBipedAndBestTripod) {
       std::optional<double>& best = rows.fields()[gait] == "tripod" ? best_tripod : best_biped;
       best = std::max(best.value_or(-1e300), rows.Number(fitness));
     }
-    for (const auto& [key, best] : {std::pair{"best_biped_fitness", best_biped}, std::pair{"best_tripod_fitness", best_tripod}}) {
+    for (const auto& [key, best] : {std::pair{"best_biped", best_biped}, std::pair{"best_tripod", best_tripod}}) {
       ASSERT_TRUE(run.contains(key)) << key;
       if (best) {
         ++found;
-        EXPECT_EQ(run[key].get<double>(), *best) << run["dir"] << " " << key;
+        EXPECT_EQ(run[key]["fitness"].get<double>(), *best) << run["dir"] << " " << key;
       } else {
         EXPECT_TRUE(run[key].is_null()) << run["dir"] << " " << key;
       }
     }
+    // the same build scores the unperturbed member as the run did
+    for (const char* key : {"final_best", "best_biped", "best_tripod"}) {
+      if (run[key].is_null()) continue;
+      const nlohmann::json& rescore = run[key]["rescore"];
+      EXPECT_EQ(rescore["fitness"].size(), 3u) << key;
+      EXPECT_EQ(rescore["fitness"][1], run[key]["fitness"]) << run["dir"] << " " << key;
+      EXPECT_EQ(rescore["recorded_reproduced"], true) << run["dir"] << " " << key;
+    }
   }
   EXPECT_GT(found, 0);  // not all null
+  // the walks are the first learner's best biped and best tripod by their re-scores
+  const nlohmann::json walks = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).walks));
+  for (const char* gait : {"biped", "tripod"}) {
+    const nlohmann::json& pick = manifest["best_" + std::string(gait)];
+    if (pick.is_null()) continue;
+    EXPECT_EQ(walks[gait]["run"], pick["run"]);
+    EXPECT_EQ(walks[gait]["id"], pick["id"]);
+    double best = -1e300;
+    for (const nlohmann::json& run : manifest["runs"]) {
+      const nlohmann::json& f = run["best_" + std::string(gait)];
+      if (!f.is_null()) best = std::max(best, f["rescore"]["median"].get<double>());
+    }
+    for (const nlohmann::json& run : manifest["runs"]) {
+      if (run["dir"] != pick["run"]) continue;
+      EXPECT_EQ(run["best_" + std::string(gait)]["rescore"]["median"], best) << gait;
+    }
+  }
+}
+
+// a finished reproduction resumed evaluates its finals no more
+TEST_F(ReproductionTest, AResumedReproductionTakesItsRescoresFromTheCache) {
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
+  const std::string manifest = ReadFile(ReproductionFiles(Dir("r")).manifest);
+  int rescored = 0;
+  ReproductionObserver observer;
+  observer.on_rescore = [&](int, int) { ++rescored; };
+  Reproduction(Tiny(), Dir("r"), StartMode::kResume).Run(Threads(2), observer);
+  EXPECT_EQ(rescored, 0);
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).manifest), manifest);
+  // another ensemble size: the finals again
+  ReproductionConfig five = Tiny();
+  five.ensemble = 5;
+  Reproduction(five, Dir("r"), StartMode::kResume).Run(Threads(2), observer);
+  EXPECT_GT(rescored, 0);
+  const nlohmann::json again = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
+  EXPECT_EQ(again["runs"][0]["final_best"]["rescore"]["fitness"].size(), 5u);
 }
 
 TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheOthers) {
@@ -137,25 +191,20 @@ TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheO
   for (const PlannedRun& run : PlanRuns(c)) names.push_back(run.name + ":" + run.config.learner);
   EXPECT_EQ(names, (std::vector<std::string>{"free-1:ga", "time-1:ga", "performance-1:ga", "pso-free-1:pso",
                                              "pso-time-1:pso", "pso-performance-1:pso"}));
-  const ReproductionSummary returned = Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2));
-  EXPECT_EQ(returned.evaluations, 6 * 2 * 2) << "every learner's evaluations";
-  const nlohmann::json summary = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).summary_json));
-  EXPECT_EQ(summary.at("runs").size(), 3u) << "the paper's statistics are the first learner's";
-  EXPECT_EQ(summary.at("evaluations"), 3 * 2 * 2);
-  EXPECT_EQ(summary.at("learner_runs").size(), 6u);
-  EXPECT_EQ(summary.at("learners").size(), 2u);
-  EXPECT_EQ(summary.at("learners")[1].at("name"), "pso");
-  const nlohmann::json& pso = summary.at("learner_comparison").at("pso").at("cases");
-  for (const char* scaffold : {"free", "time", "performance"}) {
-    const nlohmann::json run = nlohmann::json::parse(ReadFile(Dir("r") + "/pso-" + scaffold + "-1/archive.json"));
-    EXPECT_EQ(run.at("learner"), "pso");
-    EXPECT_EQ(pso.at(scaffold).at("final_best_mean"), run.at("archive")[0].at("fitness")) << scaffold;
-    EXPECT_EQ(pso.at(scaffold).at("runs"), 1);
+  Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2));
+  const nlohmann::json manifest = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
+  EXPECT_EQ(manifest.at("learners").size(), 2u);
+  EXPECT_EQ(manifest.at("learners")[1].at("name"), "pso");
+  ASSERT_EQ(manifest.at("runs").size(), 6u) << "every learner's runs";
+  for (const nlohmann::json& run : manifest.at("runs")) {
+    const nlohmann::json archive = nlohmann::json::parse(ReadFile(Dir("r") + "/" + run.at("dir").get<std::string>() +
+                                                                  "/archive.json"));
+    EXPECT_EQ(run.at("learner"), archive.value("learner", "ga")) << run.at("dir");
+    EXPECT_EQ(run.at("final_best").at("fitness"), archive.at("archive")[0].at("fitness")) << run.at("dir");
   }
-  const std::string md = ReadFile(ReproductionFiles(Dir("r")).summary_md);
-  EXPECT_NE(md.find("## Learners under the scaffolds"), std::string::npos) << md;
-  EXPECT_NE(md.find("| particle swarm (pso) |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| genetic algorithm (ga) |"), std::string::npos) << md;
+  // the walks and the gallery: the first learner's runs only
+  const nlohmann::json gallery = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).gallery));
+  for (const nlohmann::json& g : gallery.at("individuals")) EXPECT_EQ(g.at("run").get<std::string>().rfind("pso", 0), std::string::npos);
   // another learner's run folder is a reproduction's too
   fs::remove_all(Dir("r2"));
   fs::create_directories(Dir("r2") + "/cmaes-time-3");
@@ -206,8 +255,6 @@ TEST_F(ReproductionTest, RunsSideBySideWriteTheSameFilesAsOneAtATime) {
   EXPECT_EQ(one.size(), side.size());
   for (const auto& [name, text] : one) {
     ASSERT_TRUE(side.count(name)) << name;
-    // summary.json holds evaluation_seconds, summary.md the evaluation rate
-    if (name.rfind("summary", 0) == 0) continue;
     EXPECT_EQ(text, side.at(name)) << name;
   }
   EXPECT_GE(one.size(), 6u * 5 + 3);
@@ -227,8 +274,8 @@ TEST_F(ReproductionTest, GrowsByResumingWithMoreReplicates) {
   std::sort(started.begin(), started.end());
   EXPECT_EQ(started, (std::vector<std::string>{"free-2", "performance-2", "time-2"}));
   EXPECT_EQ(RunFilesWithoutTiming(Dir("r") + "/time-1"), first);
-  const auto summary = nlohmann::json::parse(ReadFile(Dir("r") + "/summary.json"));
-  EXPECT_EQ(summary.at("runs").size(), 6u);
+  const auto manifest = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
+  EXPECT_EQ(manifest.at("runs").size(), 6u);
 }
 
 }  // namespace

@@ -1,22 +1,18 @@
 #!/usr/bin/env python3
-"""Tests for scripts/figures.py on a small synthetic reproduction directory.
+"""Tests for walkers_stats/figures.py on a small synthetic reproduction (fixtures.py:
+3 cases x 2 replicates x 60 generations, walks of 451 frames, a gallery of 6), run as
+`walkers reproduce` runs it (`scripts/walkers_stats figures DIR`), and the figures
+inspected as drawn.
 
-Run:  /usr/bin/python3 tests/scripts/figures_test.py   (needs numpy and matplotlib)
-
-Each test writes a RUN_DIR (3 cases x 2 replicates x 60 generations, walks of
-451 frames, a gallery of 6 individuals) to a temporary directory, runs the script
-as a subprocess with the same interpreter and checks its outputs and exit status.
+Run:  /usr/bin/python3 tests/scripts/walkers_stats/figures_test.py   (needs numpy, matplotlib)
 """
-import csv
-import importlib.util
-import json
-import math
 import os
 import subprocess
 import sys
 import tempfile
 import unittest
 import xml.etree.ElementTree as ET
+from unittest import mock
 
 import numpy as np
 
@@ -24,166 +20,42 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
+from matplotlib.collections import PathCollection  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SCRIPT = os.path.join(ROOT, "scripts", "figures.py")
+import fixtures  # noqa: E402
+from fixtures import CASES, edit_json  # noqa: E402
+from walkers_stats import figures, load, statistics  # noqa: E402
+
 ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals")
 WALK_FIGS = ("fig4a", "fig4b", "fig6")
-# summary.json's list of scaffolds, as the program writes it (evolve/scaffold.cc)
-SCAFFOLDS = [{"name": "free", "label": "free", "colour": "tab:green"},
-             {"name": "time", "label": "time-constrained", "colour": "tab:orange"},
-             {"name": "performance", "label": "performance-based", "colour": "tab:purple"}]
-CASES = tuple(s["name"] for s in SCAFFOLDS)
-REPLICATES, GENERATIONS, FRAMES = 2, 60, 451
+REPLICATES, GENERATIONS = 2, 60
 
 
-# ----------------------------------------------------------------------------- data
-
-def body(half_body_x, femur, tibia, half_foot_x):
-    """A body dict in the walks.json / gallery.json format."""
-    return {"half_body_x": half_body_x, "half_body_y": 0.12, "half_foot_x": half_foot_x,
-            "half_foot_y": 0.04, "femur_length": femur, "tibia_length": tibia,
-            "knee_radius": 0.1}
-
-
-def knee(hip, ankle, femur, tibia):
-    """Two-link inverse kinematics: the knee point, bent forward."""
-    hip, ankle = np.asarray(hip, float), np.asarray(ankle, float)
-    d = ankle - hip
-    dist = min(np.linalg.norm(d), 0.999 * (femur + tibia))
-    a = (femur ** 2 - tibia ** 2 + dist ** 2) / (2 * dist)
-    h = math.sqrt(max(femur ** 2 - a ** 2, 0.0))
-    u = d / np.linalg.norm(d)
-    normal = np.array([-u[1], u[0]])            # left of hip->ankle = forward when down
-    return hip + a * u + h * normal
+def make_run_dir(root, learners=("ga",)):
+    """A complete synthetic reproduction under root; returns its path."""
+    runs = [r for learner in learners for r in fixtures.evolving_runs(REPLICATES, GENERATIONS, learner)]
+    return fixtures.write_reproduction(
+        root, runs, GENERATIONS, learners=learners,
+        walks={"biped": fixtures.walk("biped", "performance-2", 1.0,
+                                      fixtures.body(0.04, 0.45, 0.75, 0.08), 12.3),
+               "tripod": fixtures.walk("tripod", "time-1", 0.7,
+                                       fixtures.body(0.85, 0.5, 0.6, 0.25), 8.9)},
+        gallery=fixtures.gallery())
 
 
-def pose(b, hip, ankle_l, ankle_r, pitch, trunk_dx):
-    """A pose dict (lists) with the trunk centred trunk_dx behind the hip."""
-    c, s = math.cos(pitch), math.sin(pitch)
-    trunk = [hip[0] - trunk_dx * c, hip[1] - trunk_dx * s, pitch]
-    f, t = b["femur_length"], b["tibia_length"]
-    return {"trunk": trunk, "hip": list(hip),
-            "knee_l": knee(hip, ankle_l, f, t).tolist(), "ankle_l": list(ankle_l),
-            "foot_l": 0.0,
-            "knee_r": knee(hip, ankle_r, f, t).tolist(), "ankle_r": list(ankle_r),
-            "foot_r": 0.0}
-
-
-def walk(gait, run, speed, b, fitness):
-    """A synthetic 15-s walk (451 frames at 30 Hz) in the walks.json format."""
-    leg = b["femur_length"] + b["tibia_length"]
-    t = np.linspace(0.0, 15.0, FRAMES)
-    hip_x = speed * t + 0.02 * np.sin(4 * t)
-    hip_y = 0.9 * leg + 0.03 * np.cos(8 * t)
-    ank_l_x = hip_x + 0.25 * np.sin(4 * t)
-    ank_r_x = hip_x - 0.25 * np.sin(4 * t)
-    ank_l_y = b["half_foot_y"] + np.maximum(0.0, 0.08 * np.sin(4 * t))
-    ank_r_y = b["half_foot_y"] + np.maximum(0.0, -0.08 * np.sin(4 * t))
-    pitch = 0.3 if gait == "tripod" else 0.0
-    trunk_dx = b["half_body_x"] * 0.9 if gait == "tripod" else 0.0
-    frames = {k: [] for k in ("trunk", "hip", "knee_l", "ankle_l", "foot_l", "knee_r",
-                              "ankle_r", "foot_r")}
-    for i in range(FRAMES):
-        p = pose(b, (hip_x[i], hip_y[i]), (ank_l_x[i], ank_l_y[i]),
-                 (ank_r_x[i], ank_r_y[i]), pitch, trunk_dx)
-        for k in frames:
-            frames[k].append(p[k])
-    com = np.column_stack([hip_x - 0.1, hip_y - 0.2])
-    vel = np.gradient(com, t, axis=0)
-    frames.update({
-        "t": t.tolist(), "state": ["DS"] * FRAMES, "x_target": (hip_x + 0.1).tolist(),
-        "planted_l": (ank_l_y <= b["half_foot_y"]).tolist(),
-        "planted_r": (ank_r_y <= b["half_foot_y"]).tolist(),
-        "distance": np.minimum(ank_l_x, ank_r_x).tolist(),
-        "com": com.tolist(), "com_velocity": vel.tolist()})
-    return {"title": f"best {gait}", "run": run, "id": "50/3", "fitness": fitness,
-            "gait": gait, "leg_length": leg, "preset": "original", "body": b,
-            "frames": frames}
-
-
-def gallery():
-    """Six individuals (three bipeds, three tripods) standing at x = 0."""
-    people = []
-    for k, (gait, hbx) in enumerate([("biped", 0.5), ("biped", 0.2), ("biped", 0.04),
-                                     ("tripod", 0.9), ("tripod", 0.7), ("tripod", 0.5)]):
-        b = body(hbx, 0.45 + 0.02 * k, 0.6 + 0.03 * k, 0.25 - 0.03 * (k % 3))
-        leg = b["femur_length"] + b["tibia_length"]
-        hip = (0.05, 0.93 * leg)
-        trunk_dx = 0.9 * hbx if gait == "tripod" else 0.0
-        people.append({"label": f"performance-{k % 2 + 1} gen {20 * k}",
-                       "run": f"performance-{k % 2 + 1}", "id": f"{20 * k}/1",
-                       "gait": gait, "fitness": 5.0 + k, "body": b,
-                       "pose": pose(b, hip, (0.0, 0.04), (0.0, 0.04),
-                                    0.3 if gait == "tripod" else 0.0, trunk_dx)})
-    return {"individuals": people}
-
-
-def write_generations(path, seed, tripod_until):
-    """60 generations of plausible evolution: fitness up, body shrinking."""
-    rng = np.random.default_rng(seed)
-    header = ["generation", "best_fitness", "ave_best3", "archive_mean",
-              "ceiling_half_body_x", "best_half_body_x", "best_femur", "best_tibia",
-              "best_gait", "falls", "evals_per_s"]
-    fit = 4.0 + np.maximum.accumulate(np.cumsum(rng.uniform(0, 0.3, GENERATIONS)))
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(header)
-        for g in range(GENERATIONS):
-            hbx = 0.9 * math.exp(-g / 25) + 0.035
-            w.writerow([g, fit[g], fit[g] - 0.5, fit[g] - 2, 0.9, hbx,
-                        0.53 + 0.001 * g, 0.68 + 0.002 * g,
-                        "tripod" if g < tripod_until else "biped", 3, 40.0])
-
-
-def make_run_dir(root):
-    """Write a complete synthetic RUN_DIR under root; returns its path."""
-    run_dir = os.path.join(root, "repro")
-    os.makedirs(run_dir)
-    runs = []
-    for c, case in enumerate(CASES):
-        for rep in range(1, REPLICATES + 1):
-            name = f"{case}-{rep}"
-            os.makedirs(os.path.join(run_dir, name))
-            write_generations(os.path.join(run_dir, name, "generations.csv"),
-                              seed=10 * c + rep, tripod_until=15 * (c + rep))
-            runs.append({"case": case, "replicate": rep, "dir": name})
-    write_json(os.path.join(run_dir, "summary.json"),
-               {"preset": "original", "generations": GENERATIONS,
-                "replicates": REPLICATES, "scaffolds": SCAFFOLDS, "runs": runs})
-    write_json(os.path.join(run_dir, "walks.json"), {
-        "biped": walk("biped", "performance-2", 1.0, body(0.04, 0.45, 0.75, 0.08), 12.3),
-        "tripod": walk("tripod", "time-1", 0.7, body(0.85, 0.5, 0.6, 0.25), 8.9)})
-    write_json(os.path.join(run_dir, "gallery.json"), gallery())
-    return run_dir
-
-
-def load_script():
-    """scripts/figures.py as a module."""
-    spec = importlib.util.spec_from_file_location("figures", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def write_json(path, obj):
-    """Dump obj as JSON to path."""
-    with open(path, "w") as f:
-        json.dump(obj, f)
-
-
-def edit_json(path, change):
-    """Load a JSON file, apply change(obj) in place and write it back."""
-    with open(path) as f:
-        obj = json.load(f)
-    change(obj)
-    write_json(path, obj)
+def drawn_figures(inputs):
+    """{name: figure} of every figure draw_all makes of `inputs`, not saved."""
+    figs = {}
+    with mock.patch.object(figures, "save", lambda fig, out_dir, name: figs.__setitem__(name, fig)), \
+            figures.plt.rc_context(figures.STYLE):
+        figures.draw_all(inputs, None)
+    return figs
 
 
 # ----------------------------------------------------------------------------- tests
 
 class FiguresTest(unittest.TestCase):
-    """Runs scripts/figures.py on synthetic inputs."""
+    """Runs the figures command on synthetic inputs."""
 
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -193,14 +65,12 @@ class FiguresTest(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
-    def run_script(self, expect_rc=0):
-        """Run the script; assert its exit status; return stderr."""
-        proc = subprocess.run([sys.executable, SCRIPT, self.run_dir], text=True,
-                              capture_output=True, timeout=300)
-        self.assertEqual(proc.returncode, expect_rc,
-                         f"stdout:\n{proc.stdout}\nstderr:\n{proc.stderr}")
-        self.assertNotIn("Traceback", proc.stderr)
-        return proc.stderr
+    def run_script(self, expect_rc=0, *options):
+        """Run the figures command; assert its exit status; return stderr."""
+        status, out, err = fixtures.run_statistics("figures", self.run_dir, *options)
+        self.assertEqual(status, expect_rc, f"stdout:\n{out}\nstderr:\n{err}")
+        self.assertNotIn("Traceback", err)
+        return err
 
     def assert_figure(self, name):
         """NAME.png decodes, is a paper width at 200 dpi and not blank; NAME.svg parses."""
@@ -231,7 +101,10 @@ class FiguresTest(unittest.TestCase):
 
     def test_all_figures_written(self):
         stderr = self.run_script()
-        self.assertNotIn("warning", stderr)
+        # no warning but that the authors' runs are missing, which fig9 says too
+        self.assertEqual([l for l in stderr.splitlines() if "warning" in l],
+                         [f"warning: fig9: {figures.AUTHORS_MISSING} (--authors PATH)"])
+        self.assertIn("the authors", self.svg_text("fig9"))
         for name in ALL:
             self.assert_figure(name)
         self.assertIn("performance-2", self.svg_text("fig7"))   # the best biped's run
@@ -257,7 +130,7 @@ class FiguresTest(unittest.TestCase):
                 self.assert_figure(name)
 
     def test_case_without_runs_says_no_data(self):
-        edit_json(os.path.join(self.run_dir, "summary.json"),
+        edit_json(os.path.join(self.run_dir, "reproduction.json"),
                   lambda s: s.update(runs=[r for r in s["runs"] if r["case"] != "time"]))
         stderr = self.run_script()
         self.assertIn("no runs for case 'time'", stderr)
@@ -288,18 +161,18 @@ class FiguresTest(unittest.TestCase):
         for name in ("fig5", "fig7", "fig8", "fig9"):
             self.assert_figure(name)
 
-    def test_the_cases_are_the_summarys_list_of_scaffolds(self):
-        # a fourth scaffold, named only in summary.json, gets its row and its line
-        def add_case(summary):
-            summary["scaffolds"].append({"name": "steps", "label": "stepwise",
-                                         "colour": "tab:cyan"})
-            summary["runs"].append({"case": "steps", "replicate": 1, "dir": "free-1"})
-        edit_json(os.path.join(self.run_dir, "summary.json"), add_case)
+    def test_the_cases_are_the_reproductions_list_of_scaffolds(self):
+        # a fourth scaffold, named only in reproduction.json, gets its row and its line
+        def add_case(manifest):
+            manifest["scaffolds"].append({"name": "steps", "label": "stepwise",
+                                          "colour": "tab:cyan", "paper_tripod_finals": 0})
+            manifest["runs"].append(dict(manifest["runs"][0], case="steps", replicate=1))
+        edit_json(os.path.join(self.run_dir, "reproduction.json"), add_case)
         self.run_script()
         self.assertIn("Case 4 (steps), replicate 1", self.svg_text("fig8"))
         self.assertIn("Case 4 stepwise (n = 1)", self.svg_text("fig9"))
 
-    def test_a_summary_without_its_scaffolds_is_an_error(self):
+    def test_a_reproduction_without_its_scaffolds_is_an_error(self):
         for change, message in ((lambda s: s.pop("scaffolds"), "missing field 'scaffolds'"),
                                 (lambda s: s["scaffolds"][1].update(colour="orangeish"),
                                  "'scaffolds[1].colour' is 'orangeish', not a colour"),
@@ -312,41 +185,33 @@ class FiguresTest(unittest.TestCase):
             os.makedirs(make, exist_ok=True)
             self.run_dir = make_run_dir(tempfile.mkdtemp(dir=make))
             self.fig_dir = os.path.join(self.run_dir, "figures")
-            edit_json(os.path.join(self.run_dir, "summary.json"), change)
+            edit_json(os.path.join(self.run_dir, "reproduction.json"), change)
             stderr = self.run_script(expect_rc=1)
             self.assertIn(message, stderr)
 
-    def add_learners(self, summary):
-        """A second learner beside the GA, whose runs reuse the GA's run folders."""
-        summary["learners"] = [{"name": "ga", "label": "genetic algorithm", "colour": "tab:blue"},
-                               {"name": "cmaes", "label": "CMA-ES", "colour": "tab:red"}]
-        summary["learner_runs"] = [dict(r, learner=name) for name in ("ga", "cmaes")
-                                   for r in summary["runs"]]
-
     def test_two_learners_give_the_learners_figure(self):
-        self.assert_absent("learners")
         self.run_script()
         self.assert_absent("learners")          # one learner: nothing to compare
-        edit_json(os.path.join(self.run_dir, "summary.json"), self.add_learners)
+        self.run_dir = make_run_dir(tempfile.mkdtemp(dir=self.tmp.name), learners=("ga", "cmaes"))
+        self.fig_dir = os.path.join(self.run_dir, "figures")
         stderr = self.run_script()
-        self.assertNotIn("warning", stderr)
+        self.assertEqual(stderr.count("warning"), 1, stderr)    # the authors' runs only
         self.assert_figure("learners")
         self.assertIn("CMA-ES", self.svg_text("learners"))
         for name in ALL:
             self.assert_figure(name)
 
-    def test_a_learner_run_of_an_unknown_learner_is_an_error(self):
-        def change(summary):
-            self.add_learners(summary)
-            summary["learner_runs"][3]["learner"] = "nsga2"
-        edit_json(os.path.join(self.run_dir, "summary.json"), change)
+    def test_a_run_of_an_unknown_learner_is_an_error(self):
+        self.run_dir = make_run_dir(tempfile.mkdtemp(dir=self.tmp.name), learners=("ga", "cmaes"))
+        edit_json(os.path.join(self.run_dir, "reproduction.json"),
+                  lambda m: m["runs"][7].update(learner="nsga2"))
         stderr = self.run_script(expect_rc=1)
-        self.assertIn("'learner_runs[3].learner' is 'nsga2', expected one of ga, cmaes", stderr)
+        self.assertIn("field 'runs[7].learner' is 'nsga2', expected one of ga, cmaes", stderr)
 
-    def test_missing_summary_is_an_error(self):
-        os.remove(os.path.join(self.run_dir, "summary.json"))
+    def test_missing_reproduction_json_is_an_error(self):
+        os.remove(os.path.join(self.run_dir, "reproduction.json"))
         stderr = self.run_script(expect_rc=1)
-        self.assertIn("summary.json: file not found", stderr)
+        self.assertIn("reproduction.json: file not found", stderr)
         self.assertFalse(os.path.exists(self.fig_dir))
 
     def test_missing_generations_is_an_error(self):
@@ -376,14 +241,14 @@ class FiguresTest(unittest.TestCase):
         with open(os.path.join(self.fig_dir, "fig4a.png"), "rb") as f:
             earlier = f.read()
         driver = ("import errno, sys, matplotlib.figure\n"
-                  f"sys.path.insert(0, {os.path.dirname(SCRIPT)!r})\n"
-                  "import figures\n"
+                  f"sys.path.insert(0, {fixtures.SCRIPTS!r})\n"
+                  "from walkers_stats import figures\n"
                   "def full(self, fname, **kwargs):\n"
                   "    with open(fname, 'wb') as f:\n"
                   "        f.write(b'half a figure')\n"
                   "    raise OSError(errno.ENOSPC, 'No space left on device')\n"
                   "matplotlib.figure.Figure.savefig = full\n"
-                  f"sys.exit(figures.main([{self.run_dir!r}]))\n")
+                  f"sys.exit(figures.draw({self.run_dir!r}, {{'checkout': '.', 'runs': {{}}}}))\n")
         proc = subprocess.run([sys.executable, "-c", driver], text=True, capture_output=True,
                               timeout=300)
         self.assertEqual(proc.returncode, 1, proc.stderr)
@@ -402,8 +267,7 @@ class FiguresTest(unittest.TestCase):
         self.assertFalse(os.path.exists(log))
 
     def test_font_sizes_are_at_least_8_pt(self):
-        module = load_script()
-        sizes = {k: v for k, v in module.STYLE.items() if k.endswith("size")}
+        sizes = {k: v for k, v in figures.STYLE.items() if k.endswith("size")}
         self.assertTrue(sizes)
         for key, size in sizes.items():
             self.assertGreaterEqual(size, 8, key)
@@ -415,22 +279,15 @@ class DrawnFiguresTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.tmp = tempfile.TemporaryDirectory()
-        run_dir = make_run_dir(cls.tmp.name)
-        module = load_script()
-        cls.figs = {}
-        module.save = lambda fig, out_dir, name: cls.figs.__setitem__(name, fig)
-        fig_dir = os.path.join(run_dir, "figures")
-        os.makedirs(fig_dir)
-        with module.plt.rc_context(module.STYLE):
-            module.draw_all(module.load_run_dir(run_dir), fig_dir)
-        cls.plt = module.plt
+        cls.run_dir = make_run_dir(cls.tmp.name)
+        cls.figs = drawn_figures(figures.load_inputs(cls.run_dir))
 
     @classmethod
     def tearDownClass(cls):
-        cls.plt.close("all")
+        figures.plt.close("all")
         cls.tmp.cleanup()
 
-    def test_generation_axes_end_at_the_summarys_last_generation(self):
+    def test_generation_axes_end_at_the_reproductions_generations(self):
         figs = self.figs
         for name in ("fig8", "fig9"):
             ax = figs[name].axes[0]
@@ -460,7 +317,6 @@ class DrawnFiguresTest(unittest.TestCase):
 
     def test_fig9_band_is_the_bootstrap_interval_of_the_mean(self):
         ax = self.figs["fig9"].axes[0]
-        claims = load_claims()
         lines = [l for l in ax.get_lines() if len(l.get_xdata())]
         faint = [l for l in lines if l.get_alpha() is not None and l.get_alpha() < 0.5]
         means = [l for l in lines if l.get_alpha() is None]
@@ -470,7 +326,7 @@ class DrawnFiguresTest(unittest.TestCase):
             curves = np.array([l.get_ydata() for l in faint
                                if l.get_color() == mean.get_color()])
             np.testing.assert_allclose(mean.get_ydata(), curves.mean(axis=0))
-            low, high = claims.mean_band(curves)
+            low, high = statistics.mean_band(curves)
             edge = band.get_paths()[0].vertices[:, 1]
             # the band's outline runs along both limits
             self.assertTrue(np.isin(np.round(low, 9), np.round(edge, 9)).all(), case)
@@ -478,45 +334,42 @@ class DrawnFiguresTest(unittest.TestCase):
             self.assertTrue(np.all(low <= curves.mean(axis=0) + 1e-12), case)
             self.assertTrue(np.any(high - low > 0), case)
 
-    def test_finals_shows_every_final_best_and_the_tripod_shares(self):
+    def test_finals_shows_every_re_scored_final_best_and_the_tripod_shares(self):
         left, right = self.figs["finals"].axes
-        points = np.concatenate([c.get_offsets()[:, 1] for c in left.collections])
+        points = np.concatenate([c.get_offsets()[:, 1] for c in left.collections
+                                 if isinstance(c, PathCollection)])
         self.assertEqual(len(points), len(CASES) * REPLICATES)
+        # the re-scored medians, each with its ensemble's range
+        rep = load.load_reproduction(self.run_dir)
+        medians = [r["final_best"]["rescore"]["median"] for r in rep["primary"]]
+        self.assertEqual(sorted(points), sorted(medians))
+        self.assertNotIn(rep["primary"][0]["final_best"]["fitness"], list(points))
+        ranges = [c for c in left.collections if not isinstance(c, PathCollection)]
+        self.assertEqual(sum(len(c.get_segments()) for c in ranges), len(CASES) * REPLICATES)
         # synthetic: only performance-2 is a tripod to the end (tripod_until = 60 > 59)
         heights = [bar.get_height() for bar in right.patches]
         self.assertEqual(heights, [0.0, 0.0, 0.5])
-        claims = load_claims()
         texts = [t.get_text() for t in right.texts]
         self.assertEqual(texts, ["0 of 2", "0 of 2", "1 of 2"])
         bar_tops = [seg[:, 1].max() for seg in right.collections[-1].get_segments()]
-        self.assertAlmostEqual(bar_tops[-1], claims.wilson_interval(1, 2)[1], places=12)
+        self.assertAlmostEqual(bar_tops[-1], statistics.wilson_interval(1, 2)[1], places=12)
 
     def test_fig8_with_ten_replicates_stays_legible(self):
-        module = load_script()
         drawn = {}
-        module.save = lambda fig, out_dir, name: drawn.__setitem__(name, fig)
-        with tempfile.TemporaryDirectory() as tmp:
-            inputs = module.load_run_dir(make_run_dir(tmp))
+        inputs = figures.load_inputs(self.run_dir)
         runs = [{**run, "replicate": k + 1} for k in range(10) for run in inputs["runs"]
                 if run["replicate"] == 1]
-        with module.plt.rc_context(module.STYLE):
-            module.fig8(runs, inputs["scaffolds"], 10, GENERATIONS, None)
+        with mock.patch.object(figures, "save", lambda fig, out_dir, name: drawn.__setitem__(name, fig)), \
+                figures.plt.rc_context(figures.STYLE):
+            figures.fig8(runs, inputs["scaffolds"], 10, GENERATIONS, None)
         fig = drawn["fig8"]
-        self.assertGreater(fig.get_size_inches()[0], module.DOUBLE)
+        self.assertGreater(fig.get_size_inches()[0], figures.DOUBLE)
         titles = [ax.get_title() for ax in fig.axes]
         self.assertEqual(len(titles), 30)
         self.assertEqual(titles[:10], [f"rep. {k}" for k in range(1, 11)])
         self.assertEqual(fig.axes[10].get_ylabel(), "Case 2 (time)\nbest fitness")
         self.assertIn("red while it is a tripod", fig._suptitle.get_text())
-        self.plt.close(fig)
-
-
-def load_claims():
-    """scripts/claims.py as a module."""
-    spec = importlib.util.spec_from_file_location("claims", os.path.join(ROOT, "scripts", "claims.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+        figures.plt.close(fig)
 
 
 if __name__ == "__main__":

@@ -1,10 +1,6 @@
-#!/usr/bin/env python3
-"""Draw the paper's figures 4-9 from a reproduction directory.
+"""The paper's figures 4-9 of a reproduction, and two of our own.
 
-Usage:  /usr/bin/python3 scripts/figures.py RUN_DIR
-
-(Debian's /usr/bin/python3 with python3-matplotlib and python3-scipy; needs the
-standard library, numpy, matplotlib, and scipy through scripts/claims.py.) Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.svg for
+Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.svg for
 
   fig4a  distance walked (leg lengths) over 15 s, best biped vs best tripod
   fig4b  filmstrip of both walkers over the first 5 s (a snapshot every 0.5 s)
@@ -12,36 +8,31 @@ standard library, numpy, matplotlib, and scipy through scripts/claims.py.) Write
   fig6   relative CoG height and CoG velocities (leg lengths, leg lengths/s)
   fig7   body, femur and tibia length per generation of the best biped's run
   fig8   best fitness per generation of every run, coloured by gait class
-  fig9   mean best fitness per case with its bootstrap 95 % band; each replicate faintly
-  finals final best fitness per case (points and box) and the share of runs whose
-         final best is a tripod, with Wilson 95 % intervals (not in the paper)
-  learners  (a reproduction of two learners or more) final best fitness per learner
-         and case with the runs ending as tripods, and each learner's mean best
+  fig9   mean best fitness per case with its bootstrap 95 % band, each replicate faintly,
+         and, given a checkout of the authors' repository, each of their runs as a thin
+         dashed line (without one, a note says why theirs are missing)
+  finals each run's final best fitness per case, re-scored: the ensemble's median (points
+         over a box) and its range (a line); and the share of runs whose final best is a
+         tripod, with Wilson 95 % intervals (not in the paper)
+  learners  (a reproduction of two learners or more) final best fitness (re-scored) per
+         learner and case with the runs ending as tripods, and each learner's mean best
          fitness per generation and case
 
-Inputs (formats as written by the `walkers` program):
-  RUN_DIR/summary.json              required; its "scaffolds" list names the cases
-                                    (name, label, colour), in the paper's order
-  RUN_DIR/<run dir>/generations.csv required for every run listed in summary.json
-  RUN_DIR/walks.json                optional (fig4a, fig4b, fig6; picks fig7's run)
-  RUN_DIR/gallery.json              optional (fig5)
-  summary.json's "learners" (name, label, colour, as "scaffolds") and "learner_runs"
-  ({learner, case, replicate, dir}; their generations.csv required): optional; with
-  two learners or more they give the learners figure. Figures 4-9 show "runs", the
-  first learner's.
+from the files load.py reads: reproduction.json and every run's generations.csv
+(required), walks.json and gallery.json (optional). Figures 4-9 and finals show the
+first learner's runs.
 
 Absent data (documented choice):
   * A required file that is missing, or ANY input file that is present but malformed,
-    is an error: a message naming the file (and line/field) goes to stderr, nothing is
-    drawn, and the exit status is 1.
+    is an error (load.InputError): nothing is drawn.
   * An optional file that is absent makes the figures that need it be skipped with a
-    "warning:" line on stderr; the other figures are still written and the exit status
-    is 0. fig7 then uses the run with the highest final best_fitness.
+    "warning:" line on stderr; the other figures are still written. fig7 then uses the
+    run with the highest final best_fitness.
   * A null walk in walks.json (no biped or no tripod found) drops only that walker's
     line (fig4a, fig6) and filmstrip row (fig4b), with a warning; if both are null the
     three figures are skipped.
-  * A case with no runs in summary.json is still drawn: its fig8 panels say "no data"
-    and its fig9 legend entry reads "... (no data)"; a warning is printed.
+  * A case with no runs is still drawn: its fig8 panels say "no data" and its fig9
+    legend entry reads "... (no data)"; a warning is printed.
   * An empty gallery row (no bipeds or no tripods) says "no data" in fig5.
 
 A figure that cannot be drawn or written (a full disk, say) is reported in one line
@@ -50,15 +41,11 @@ RUN_DIR/figures/figures.log (removed again by the next run that succeeds), and t
 exit status is 1.
 
 fig9's band is the percentile bootstrap 95 % interval of the mean over the replicates
-(scripts/claims.py: mean_band, seeded), drawn at up to BAND_POINTS generations; with
-one replicate no band is drawn. Replicates of unequal length are averaged over the
-generations they all have (warning printed). The generation axes of fig8 and fig9
-end at the number of generations summary.json names ("generations"; else the
-longest run's).
+(statistics.mean_band, seeded), drawn at up to BAND_POINTS generations; with one
+replicate no band is drawn. Replicates of unequal length are averaged over the
+generations they all have (warning printed). The generation axes of fig8 and fig9 end
+at the generations reproduction.json names.
 """
-import argparse
-import csv
-import json
 import math
 import os
 import sys
@@ -73,8 +60,9 @@ from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import claims  # noqa: E402  - the statistics: bootstrap bands, Wilson intervals
+from . import load  # noqa: E402
+from .load import POINT_KEYS, InputError  # noqa: E402
+from .statistics import SEED, mean_band, wilson_interval  # noqa: E402
 
 # fig9's bands, told apart where they overlap (by the case's place in the list)
 HATCHES = ("////", "\\\\\\\\", "....", "xxxx", "++++", "oooo")
@@ -85,14 +73,6 @@ GAIT_CMAPS = {"biped": "Blues", "tripod": "Reds"}
 SINGLE, DOUBLE = 3.5, 7.0          # column widths, inches
 DPI = 200
 FILM_END_S, FILM_STEP_S = 5.0, 0.5
-GEN_COLUMNS = ("generation", "best_fitness", "ave_best3", "archive_mean",
-               "ceiling_half_body_x", "best_half_body_x", "best_femur", "best_tibia",
-               "best_gait", "falls", "evals_per_s")
-BODY_KEYS = ("half_body_x", "half_body_y", "half_foot_x", "half_foot_y",
-             "femur_length", "tibia_length", "knee_radius")
-POINT_KEYS = ("hip", "knee_l", "ankle_l", "knee_r", "ankle_r")
-FRAME_KEYS = ("t", "trunk", "hip", "knee_l", "ankle_l", "foot_l", "knee_r", "ankle_r",
-              "foot_r", "distance", "com", "com_velocity")
 STYLE = {"font.size": 8, "axes.titlesize": 8, "axes.labelsize": 8,
          "xtick.labelsize": 8, "ytick.labelsize": 8, "legend.fontsize": 8,
          "figure.titlesize": 9, "axes.linewidth": 0.6, "lines.linewidth": 1.0,
@@ -100,10 +80,6 @@ STYLE = {"font.size": 8, "axes.titlesize": 8, "axes.labelsize": 8,
          "hatch.linewidth": 0.4}
 LOG_NAME = "figures.log"
 BAND_POINTS = 400                  # fig9's band: bootstrapped at this many generations at most
-
-
-class InputError(Exception):
-    """A missing or malformed input file; the message names the file."""
 
 
 class FigureError(Exception):
@@ -115,230 +91,20 @@ def warn(message):
     print(f"warning: {message}", file=sys.stderr)
 
 
-# ----------------------------------------------------------------------------- loading
-
-def read_json(path, required):
-    """Parse a JSON file; None if it is absent and not required."""
-    if not os.path.isfile(path):
-        if required:
-            raise InputError(f"{path}: file not found")
-        return None
-    try:
-        with open(path, encoding="utf-8") as f:
-            return json.load(f)
-    except (OSError, ValueError) as e:
-        raise InputError(f"{path}: not valid JSON ({e})") from None
-
-
-def field(obj, key, path, where, kind=None):
-    """obj[key], checking presence and (optionally) type; errors name file and field."""
-    if not isinstance(obj, dict) or key not in obj:
-        raise InputError(f"{path}: missing field '{where}{key}'")
-    value = obj[key]
-    if kind is not None and (not isinstance(value, kind) or isinstance(value, bool)
-                             and kind is not bool):
-        raise InputError(f"{path}: field '{where}{key}' has the wrong type")
-    return value
-
-
-def load_named_list(summary, key, path):
-    """summary[key]: a non-empty list of {name, label, colour} with distinct names (the
-    program's one list of scaffolds or learners), each given its place ("number", 1..)."""
-    items = field(summary, key, path, "", list)
-    if not items:
-        raise InputError(f"{path}: field '{key}' is empty")
-    out = []
-    for i, item in enumerate(items):
-        where = f"{key}[{i}]."
-        entry = {k: field(item, k, path, where, str) for k in ("name", "label", "colour")}
-        if not matplotlib.colors.is_color_like(entry["colour"]):
-            raise InputError(f"{path}: field '{where}colour' is '{entry['colour']}', not a colour")
-        if entry["name"] in [e["name"] for e in out]:
-            raise InputError(f"{path}: field '{where}name' repeats '{entry['name']}'")
-        out.append({**entry, "number": i + 1})
-    return out
-
-
-def load_summary(run_dir):
-    """summary.json -> its scaffolds, its runs {case, replicate, dir}, the replicate count
-    and the generations."""
-    path = os.path.join(run_dir, "summary.json")
-    summary = read_json(path, required=True)
-    scaffolds = load_named_list(summary, "scaffolds", path)
-    names = [s["name"] for s in scaffolds]
-    runs = []
-    for i, run in enumerate(field(summary, "runs", path, "", list)):
-        where = f"runs[{i}]."
-        case = field(run, "case", path, where, str)
-        if case not in names:
-            raise InputError(f"{path}: field '{where}case' is '{case}', "
-                             f"expected one of {', '.join(names)}")
-        runs.append({"case": case, "replicate": field(run, "replicate", path, where, int),
-                     "dir": field(run, "dir", path, where, str)})
-    counts = {}
-    for key in ("replicates", "generations"):
-        counts[key] = summary.get(key, 0)
-        if not isinstance(counts[key], int) or isinstance(counts[key], bool):
-            raise InputError(f"{path}: field '{key}' has the wrong type")
-    replicates = max([counts["replicates"]] + [r["replicate"] for r in runs])
-    return scaffolds, runs, replicates, counts["generations"]
-
-
-def load_learners(summary_path, summary, scaffolds):
-    """summary.json's learners and every learner's runs {learner, case, replicate, dir};
-    ([], []) when it names no learners."""
-    if "learners" not in summary:
-        return [], []
-    learners = load_named_list(summary, "learners", summary_path)
-    names = [l["name"] for l in learners]
-    cases = [s["name"] for s in scaffolds]
-    runs = []
-    for i, run in enumerate(field(summary, "learner_runs", summary_path, "", list)):
-        where = f"learner_runs[{i}]."
-        entry = {k: field(run, k, summary_path, where, str) for k in ("learner", "case", "dir")}
-        for key, allowed in (("learner", names), ("case", cases)):
-            if entry[key] not in allowed:
-                raise InputError(f"{summary_path}: field '{where}{key}' is '{entry[key]}', "
-                                 f"expected one of {', '.join(allowed)}")
-        entry["replicate"] = field(run, "replicate", summary_path, where, int)
-        runs.append(entry)
-    return learners, runs
-
-
-def load_generations(path):
-    """generations.csv -> dict of numpy arrays (numbers) and a list 'best_gait'."""
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: file not found")
-    with open(path, newline="", encoding="utf-8") as f:
-        reader = csv.DictReader(f)
-        missing = [c for c in GEN_COLUMNS if c not in (reader.fieldnames or [])]
-        if missing:
-            raise InputError(f"{path}: header lacks column(s) {', '.join(missing)}")
-        cols = {c: [] for c in GEN_COLUMNS}
-        for row in reader:
-            line = reader.line_num
-            for c in GEN_COLUMNS:
-                value = row[c]
-                if c == "best_gait":
-                    if value not in BEST_GAIT_COLOURS:
-                        raise InputError(f"{path}: line {line}, column {c}: '{value}' "
-                                         "is not 'biped', 'tripod' or 'none'")
-                    cols[c].append(value)
-                    continue
-                try:
-                    cols[c].append(float(value))
-                except (TypeError, ValueError):
-                    raise InputError(f"{path}: line {line}, column {c}: '{value}' "
-                                     "is not a number") from None
-    if not cols["generation"]:
-        raise InputError(f"{path}: no data rows")
-    data = {c: np.asarray(v) for c, v in cols.items() if c != "best_gait"}
-    data["best_gait"] = cols["best_gait"]
-    return data
-
-
-def check_walk(walk, path, name):
-    """Validate one walks.json entry (frames of equal length, numeric body)."""
-    where = f"{name}."
-    for key in ("run", "gait"):
-        field(walk, key, path, where, str)
-    for key in ("fitness", "leg_length"):
-        field(walk, key, path, where, (int, float))
-    if walk["leg_length"] <= 0:
-        raise InputError(f"{path}: field '{where}leg_length' must be positive")
-    body = field(walk, "body", path, where, dict)
-    for key in BODY_KEYS:
-        field(body, key, path, where + "body.", (int, float))
-    frames = field(walk, "frames", path, where, dict)
-    n = len(field(frames, "t", path, where + "frames.", list))
-    if n < 1:
-        raise InputError(f"{path}: '{where}frames.t' is empty")
-    for key in FRAME_KEYS:
-        value = field(frames, key, path, where + "frames.", list)
-        if len(value) != n:
-            raise InputError(f"{path}: '{where}frames.{key}' has {len(value)} entries, "
-                             f"'{where}frames.t' has {n}")
-        try:
-            np.asarray(value, dtype=float)
-        except (TypeError, ValueError):
-            raise InputError(f"{path}: '{where}frames.{key}' is not numeric") from None
-    return walk
-
-
-def load_walks(run_dir):
-    """walks.json -> {'biped': walk or None, 'tripod': walk or None}, or None if absent."""
-    path = os.path.join(run_dir, "walks.json")
-    walks = read_json(path, required=False)
-    if walks is None:
-        return None
-    if not isinstance(walks, dict):
-        raise InputError(f"{path}: expected an object with 'biped' and 'tripod'")
-    out = {}
-    for gait in GAIT_COLOURS:
-        walk = field(walks, gait, path, "")
-        out[gait] = None if walk is None else check_walk(walk, path, gait)
-    return out
-
-
-def check_pose(pose, path, where):
-    """Validate a gallery pose (points [x,y], trunk [x,y,pitch], foot angles)."""
-    def vector(key, size):
-        """Check pose[key] is a list of `size` numbers."""
-        value = field(pose, key, path, where)
-        try:
-            ok = np.asarray(value, dtype=float).shape == (size,)
-        except (TypeError, ValueError):
-            ok = False
-        if not ok:
-            raise InputError(f"{path}: field '{where}{key}' must be {size} numbers")
-    vector("trunk", 3)
-    for key in POINT_KEYS:
-        vector(key, 2)
-    for key in ("foot_l", "foot_r"):
-        field(pose, key, path, where, (int, float))
-
-
-def load_gallery(run_dir):
-    """gallery.json -> list of individuals, or None if absent."""
-    path = os.path.join(run_dir, "gallery.json")
-    gallery = read_json(path, required=False)
-    if gallery is None:
-        return None
-    people = field(gallery, "individuals", path, "", list)
-    for i, ind in enumerate(people):
-        where = f"individuals[{i}]."
-        for key in ("label", "gait"):
-            field(ind, key, path, where, str)
-        if ind["gait"] not in GAIT_COLOURS:
-            raise InputError(f"{path}: field '{where}gait' is '{ind['gait']}', "
-                             "expected 'biped' or 'tripod'")
-        field(ind, "fitness", path, where, (int, float))
-        body = field(ind, "body", path, where, dict)
-        for key in BODY_KEYS:
-            field(body, key, path, where + "body.", (int, float))
-        check_pose(field(ind, "pose", path, where, dict), path, where + "pose.")
-    return people
-
-
-def load_run_dir(run_dir):
-    """Read and validate every input; raises InputError naming the bad file."""
-    if not os.path.isdir(run_dir):
-        raise InputError(f"{run_dir}: not a directory")
-    scaffolds, runs, replicates, generations = load_summary(run_dir)
-    for run in runs:
-        run["data"] = load_generations(os.path.join(run_dir, run["dir"],
-                                                    "generations.csv"))
-    summary_path = os.path.join(run_dir, "summary.json")
-    learners, learner_runs = load_learners(summary_path, read_json(summary_path, True), scaffolds)
-    if len(learners) > 1:
-        for run in learner_runs:
-            run["data"] = load_generations(os.path.join(run_dir, run["dir"], "generations.csv"))
-    # the generation axes end where the summary's last "after N" column does
-    longest = max([int(r["data"]["generation"][-1]) + 1 for r in runs] + [1])
-    return {"scaffolds": scaffolds, "runs": runs, "replicates": replicates,
-            "learners": learners, "learner_runs": learner_runs,
-            "walks": load_walks(run_dir),
-            "gallery": load_gallery(run_dir), "generations": generations or longest}
+def load_inputs(run_dir, authors=None):
+    """Every input, read and checked (load.py), with the authors' runs (authors.py's
+    load_authors, or None) by our case names; raises InputError naming the bad file."""
+    rep = load.load_reproduction(run_dir)
+    theirs = {}
+    if authors is not None:
+        theirs = {s["name"]: authors["runs"][s["number"]] for s in rep["scaffolds"]
+                  if s["number"] in authors["runs"]}
+    return {"scaffolds": rep["scaffolds"], "runs": rep["primary"],
+            "replicates": max([rep["replicates"]] + [r["replicate"] for r in rep["primary"]]),
+            "learners": rep["learners"], "learner_runs": rep["runs"],
+            "authors": theirs if authors is not None else None,
+            "walks": load.load_walks(run_dir), "gallery": load.load_gallery(run_dir),
+            "generations": rep["generations"]}
 
 
 # ----------------------------------------------------------------------------- drawing
@@ -603,7 +369,7 @@ def pick_fig7_run(runs, walks):
                     f"{run['case']}-{run['replicate']}" == walks["biped"]["run"]:
                 return run, "run of the best biped"
         warn(f"walks.json: best biped's run '{walks['biped']['run']}' is not in "
-             "summary.json; fig7 uses the run with the highest final fitness")
+             "reproduction.json; fig7 uses the run with the highest final fitness")
     best = max(runs, key=lambda r: r["data"]["best_fitness"][-1])
     return best, "run with the highest final fitness"
 
@@ -708,12 +474,19 @@ def case_label(scaffold):
     return f"Case {scaffold['number']} {scaffold['label']}"
 
 
-def fig9(runs, scaffolds, generations, out_dir):
-    """Mean best fitness per generation and case, its bootstrap 95 % band, and each
-    replicate's curve faintly."""
-    fig, ax = plt.subplots(figsize=(SINGLE, 3.1), layout="constrained")
+AUTHORS_MISSING = "the authors' runs are not shown: no checkout of their repository was named"
+
+
+def fig9(runs, scaffolds, generations, authors, out_dir):
+    """Mean best fitness per generation and case, its bootstrap 95 % band, each
+    replicate's curve faintly, and each of the authors' runs as a thin dashed line
+    (authors: {case: [curves]}, or None: a note says they are missing)."""
+    fig, ax = plt.subplots(figsize=(SINGLE, 3.3), layout="constrained")
     for index, (scaffold, group) in enumerate(runs_by_case(runs, scaffolds)):
         colour = scaffold["colour"]
+        for curve in (authors or {}).get(scaffold["name"], []):
+            shown = curve[:generations]
+            ax.plot(np.arange(len(shown)), shown, color=colour, lw=0.6, ls="--", alpha=0.9)
         if not group:
             ax.plot([], [], color=colour, label=f"{case_label(scaffold)} (no data)")
             continue
@@ -722,7 +495,7 @@ def fig9(runs, scaffolds, generations, out_dir):
             ax.plot(g, curve, color=colour, lw=0.4, alpha=0.35)
         ax.plot(g, y.mean(axis=0), color=colour, label=f"{case_label(scaffold)} (n = {len(group)})")
         at = np.unique(np.linspace(0, len(g) - 1, min(len(g), BAND_POINTS)).round().astype(int))
-        band = claims.mean_band(y[:, at])
+        band = mean_band(y[:, at])
         if band is not None:
             # outlined and hatched, so that overlapping bands stay apart
             ax.fill_between(g[at], band[0], band[1], lw=0.6, ls="--",
@@ -734,18 +507,26 @@ def fig9(runs, scaffolds, generations, out_dir):
     ax.set_xlim(0, generations)
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3, lw=0.5)
-    legend_above(ax, title="best fitness: mean, bootstrap 95 % band, replicates")
+    handles = ax.get_legend_handles_labels()[0]
+    if authors is None:
+        ax.text(0.99, 0.02, AUTHORS_MISSING.replace(": ", ":\n"), transform=ax.transAxes,
+                ha="right", va="bottom", color="0.35")
+    else:
+        handles.append(Line2D([], [], color="0.3", lw=0.6, ls="--", label="the authors' runs"))
+    legend_above(ax, handles=handles,
+                 title="best fitness: mean, bootstrap 95 % band, replicates")
     save(fig, out_dir, "fig9")
 
 
 def finals(runs, scaffolds, out_dir):
-    """Left: each run's final best fitness per case, points over a box. Right: the
-    share of each case's runs whose final best is a tripod, Wilson 95 % interval."""
+    """Left: each run's final best fitness per case, re-scored: the ensemble's median
+    (points over a box) and its range (a line). Right: the share of each case's runs
+    whose final best is a tripod, Wilson 95 % interval."""
     fig, (left, right) = plt.subplots(1, 2, figsize=(DOUBLE, 2.8), layout="constrained",
                                       gridspec_kw={"width_ratios": (3, 2)})
     grouped = runs_by_case(runs, scaffolds)
     names = [f"Case {s['number']}\n{s['label']}" for s, _ in grouped]
-    spread = np.random.default_rng(claims.SEED)       # the points' sideways jitter
+    spread = np.random.default_rng(SEED)       # the points' sideways jitter
     for x, (scaffold, group) in enumerate(grouped):
         colour = scaffold["colour"]
         if not group:
@@ -754,19 +535,22 @@ def finals(runs, scaffolds, out_dir):
             right.text(x, 0.5, "no data", ha="center", va="center", color="0.4",
                        transform=right.get_xaxis_transform())
             continue
-        final = np.array([r["data"]["best_fitness"][-1] for r in group])
+        rescores = [r["final_best"]["rescore"] for r in group]
+        final = np.array([e["median"] for e in rescores])
         tripod = np.array([r["data"]["best_gait"][-1] == "tripod" for r in group])
         left.boxplot(final, positions=[x], widths=0.5, showfliers=False,
                      medianprops={"color": colour}, boxprops={"color": "0.4"},
                      whiskerprops={"color": "0.4"}, capprops={"color": "0.4"})
         jitter = x + spread.uniform(-0.12, 0.12, len(final))
+        left.vlines(jitter, [e["min"] for e in rescores], [e["max"] for e in rescores],
+                    color=colour, lw=0.6, alpha=0.8, zorder=2)
         for gait, marker in (("biped", "o"), ("tripod", "^")):
             mine = tripod if gait == "tripod" else ~tripod
             left.scatter(jitter[mine], final[mine], s=14, marker=marker, zorder=3,
                          facecolor=matplotlib.colors.to_rgba(colour, 0.6),
                          edgecolor=GAIT_COLOURS[gait], lw=0.8)
         k, n = int(tripod.sum()), len(group)
-        low, high = claims.wilson_interval(k, n)
+        low, high = wilson_interval(k, n)
         right.bar(x, k / n, width=0.6, color=matplotlib.colors.to_rgba(colour, 0.5),
                   edgecolor=colour)
         right.errorbar(x, k / n, yerr=[[k / n - low], [high - k / n]], color="k", lw=0.8,
@@ -777,11 +561,13 @@ def finals(runs, scaffolds, out_dir):
         ax.set_xticks(range(len(grouped)), labels)
         ax.set_xlim(-0.6, len(grouped) - 0.4)
         ax.grid(alpha=0.3, lw=0.5, axis="y")
-    left.set_ylabel("final best fitness (leg lengths)")
+    left.set_ylabel("final best fitness, re-scored\n(leg lengths)")
     left.set_ylim(bottom=0)
     left.legend(handles=[Line2D([], [], ls="", marker=m, markerfacecolor="none",
                                 markeredgecolor=GAIT_COLOURS[g], label=f"ends as a {g}")
-                         for g, m in (("biped", "o"), ("tripod", "^"))],
+                         for g, m in (("biped", "o"), ("tripod", "^"))] +
+                [Line2D([], [], ls="", marker="|", markersize=10, color="0.4",
+                        label="range of the re-scores")],
                 loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=2, borderaxespad=0.0)
     right.set_ylabel("runs ending as a tripod")
     right.set_ylim(0, 1.15)
@@ -808,7 +594,7 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
                 bars.text(x, 0.2, "no data", rotation=90, ha="center", va="bottom",
                           fontsize=6, color="0.4")
                 continue
-            finals = np.array([float(r["data"]["best_fitness"][-1]) for r in group])
+            finals = np.array([r["final_best"]["rescore"]["median"] for r in group])
             tripods = sum(r["data"]["best_gait"][-1] == "tripod" for r in group)
             bars.bar(x, finals.mean(), width * 0.9, color=scaffold["colour"], alpha=0.75,
                      label=case_label(scaffold) if i == 0 else None)
@@ -817,7 +603,7 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
                       ha="center", va="bottom", fontsize=6)
             top = max(top, float(finals.max()))
     bars.set_xticks(range(n), [f"{l['label']}\n({l['name']})" for l in learners])
-    bars.set_ylabel("final best fitness\n(leg lengths)")
+    bars.set_ylabel("final best fitness,\nre-scored (leg lengths)")
     bars.set_ylim(0, 1.2 * top)
     bars.grid(axis="y", alpha=0.3, lw=0.5)
     legend_above(bars, ncol=len(scaffolds),
@@ -886,33 +672,32 @@ def draw_all(inputs, out_dir):
     else:
         drawn("fig5", fig5, gallery, out_dir)
     if not runs:
-        warn("summary.json lists no runs: skipping fig7, fig8, fig9, finals")
+        warn("reproduction.json lists no runs: skipping fig7, fig8, fig9, finals")
         return
     scaffolds = inputs["scaffolds"]
     for scaffold, group in runs_by_case(runs, scaffolds):
         if not group:
-            warn(f"summary.json: no runs for case '{scaffold['name']}': fig8, fig9 and finals "
+            warn(f"reproduction.json: no runs for case '{scaffold['name']}': fig8, fig9 and finals "
                  "say 'no data'")
     drawn("fig7", fig7, runs, walks, out_dir)
     drawn("fig8", fig8, runs, scaffolds, inputs["replicates"], inputs["generations"], out_dir)
-    drawn("fig9", fig9, runs, scaffolds, inputs["generations"], out_dir)
+    drawn("fig9", fig9, runs, scaffolds, inputs["generations"], inputs["authors"], out_dir)
     drawn("finals", finals, runs, scaffolds, out_dir)
     if len(inputs["learners"]) > 1:
         drawn("learners", learners_figure, inputs["learners"], inputs["learner_runs"],
               scaffolds, inputs["generations"], out_dir)
 
 
-def main(argv=None):
-    """Parse arguments, load and check the inputs, draw; returns the exit status."""
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run_dir", help="reproduction directory (with summary.json)")
-    args = parser.parse_args(argv)
+def draw(run_dir, authors=None):
+    """Load and check the inputs, draw every figure; returns the exit status."""
     try:
-        inputs = load_run_dir(args.run_dir)
+        inputs = load_inputs(run_dir, authors)
     except InputError as e:
         print(f"error: {e}", file=sys.stderr)
         return 1
-    out_dir = os.path.join(args.run_dir, "figures")
+    if inputs["authors"] is None:
+        warn(f"fig9: {AUTHORS_MISSING} (--authors PATH)")
+    out_dir = os.path.join(run_dir, "figures")
     log = os.path.join(out_dir, LOG_NAME)
     try:
         os.makedirs(out_dir, exist_ok=True)
@@ -925,7 +710,3 @@ def main(argv=None):
     if os.path.exists(log):
         os.remove(log)     # an earlier failure's
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
