@@ -52,6 +52,11 @@ inline std::vector<Variant> Variants() {
     s->integrator.restart_on_torque_change = true;
     s->integrator.restart_with_last_step = true;
   });
+  add("velocity_atol_3e-6", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 3e-6; });
+  add("velocity_atol_3e-6_restart_every_tick", [](EvaluationSettings* s) {
+    s->integrator.absolute_tolerance_velocity = 3e-6;
+    s->integrator.restart_on_torque_change = true;
+  });
   add("velocity_atol_1e-3", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-3; });
   add("velocity_atol_1e-2", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-2; });
   add("tolerances_1e-5", [](EvaluationSettings* s) {

@@ -250,7 +250,8 @@ void RunConfig::Validate() const {
 }
 
 json RunConfigToJson(const RunConfig& c) {
-  json evaluation = {{"max_order", c.evaluation.integrator.max_order}};
+  json evaluation = {{"max_order", c.evaluation.integrator.max_order},
+                     {"restart_at_ticks", c.evaluation.integrator.restart_on_torque_change}};
   for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, c.evaluation);
   json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
               {"preset", c.preset.name},
@@ -286,6 +287,7 @@ RunConfig RunConfigFromJson(const json& j, const std::string& source) {
     e.RequireOnly(KeysOf(keys.at("evaluation")));
     for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
     c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
+    c.evaluation.integrator.restart_on_torque_change = e.Bool("restart_at_ticks");
     c.Validate();
     return c;
   } catch (const std::invalid_argument& e) {

@@ -86,6 +86,14 @@ TEST_F(RunTest, WritesEveryFileWithTheDocumentedColumns) {
   EXPECT_EQ(again.seed, 42u);
   EXPECT_EQ(again.scaffold_case, ScaffoldCase::kPerformance);
   EXPECT_EQ(again.ga.population, 8);
+  // and the integrator's choices with it
+  EXPECT_EQ(again.evaluation.integrator.relative_tolerance, SmallRun().evaluation.integrator.relative_tolerance);
+  EXPECT_EQ(again.evaluation.integrator.restart_on_torque_change,
+            SmallRun().evaluation.integrator.restart_on_torque_change);
+  RunConfig history = SmallRun();
+  history.evaluation.integrator.restart_on_torque_change = !history.evaluation.integrator.restart_on_torque_change;
+  EXPECT_EQ(RunConfigFromJson(RunConfigToJson(history), "config.json").evaluation.integrator.restart_on_torque_change,
+            history.evaluation.integrator.restart_on_torque_change);
 }
 
 TEST_F(RunTest, SameSeedGivesIdenticalFilesWithOneAndTwoThreads) {
