@@ -4,6 +4,7 @@
 #include <exception>
 #include <filesystem>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 
@@ -11,6 +12,7 @@
 
 #include "control/walk_record.h"
 #include "evolve/files.h"
+#include "evolve/source_commit.h"
 
 namespace walkers {
 namespace fs = std::filesystem;
@@ -125,6 +127,14 @@ std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config) {
   return runs;
 }
 
+std::vector<std::size_t> StartOrder(const std::vector<PlannedRun>& plan) {
+  std::vector<std::size_t> order(plan.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return plan[a].replicate < plan[b].replicate; });
+  return order;
+}
+
 Reproduction::Reproduction(const ReproductionConfig& config, const std::string& dir, StartMode mode)
     : config_(config), dir_(dir) {
   // the whole configuration first: nothing is touched for one that cannot run
@@ -159,12 +169,13 @@ Reproduction::~Reproduction() = default;
 
 void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observer, int runs_at_once) {
   // Runs side by side: each of `runs_at_once` threads takes the next run of
-  // the plan and advances it generation by generation, all of them handing
+  // the plan in StartOrder and advances it generation by generation, all of them handing
   // their children to the one evaluator, so that its workers have another
   // run's children while a generation waits for its slowest. Every run is
   // deterministic on its own, so its files do not depend on how many run at
   // once. The observer is called by one thread at a time.
   std::mutex mutex;  // the observer, replaced_, the first error
+  const std::vector<std::size_t> order = StartOrder(plan_);
   std::size_t next = 0;
   std::exception_ptr error;
   struct Stopped {};  // another run failed: this one stops after its generation
@@ -173,8 +184,8 @@ void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observe
       std::size_t index;
       {
         std::lock_guard<std::mutex> lock(mutex);
-        if (error || next == plan_.size()) return;
-        index = next++;
+        if (error || next == order.size()) return;
+        index = order[next++];
       }
       const PlannedRun& run = plan_[index];
       try {
@@ -305,6 +316,9 @@ void WriteReproductionData(const ReproductionConfig& config, const std::string& 
                          {"seed", config.seed},
                          {"population", config.ga.population},
                          {"ensemble", config.ensemble},
+                         // the commit of the program that wrote this file, and the runs' evaluation settings
+                         {"program", {{"commit", SourceCommit()},
+                                      {"evaluation", RunConfigToJson(plan.front().config).at("evaluation")}}},
                          {"scaffolds", ScaffoldsJson()},
                          {"learners", LearnersJson(config.learners)},
                          {"runs", runs},

@@ -76,6 +76,12 @@ struct PlannedRun {
 
 std::vector<PlannedRun> PlanRuns(const ReproductionConfig& config);
 
+// The order in which a reproduction starts the runs of its plan, as indices
+// into it: replicate by replicate, every learner's and case's replicate r
+// before any replicate r + 1, so that the runs finished at any moment form a
+// balanced design (3 x 3, then 3 x 4, ...).
+std::vector<std::size_t> StartOrder(const std::vector<PlannedRun>& plan);
+
 // The scaffolds as reproduction.json lists them for the statistics: name,
 // label, colour and the paper's tripods of each, in the paper's order.
 nlohmann::json ScaffoldsJson();

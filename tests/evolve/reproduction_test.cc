@@ -191,6 +191,15 @@ TEST_F(ReproductionTest, EveryLearnerRunsUnderEveryScaffoldAndIsComparedWithTheO
   for (const PlannedRun& run : PlanRuns(c)) names.push_back(run.name + ":" + run.config.learner);
   EXPECT_EQ(names, (std::vector<std::string>{"free-1:ga", "time-1:ga", "performance-1:ga", "pso-free-1:pso",
                                              "pso-time-1:pso", "pso-performance-1:pso"}));
+  c.replicates = 2;
+  const std::vector<PlannedRun> plan = PlanRuns(c);
+  std::vector<std::string> started;
+  for (std::size_t i : StartOrder(plan)) started.push_back(plan[i].name);
+  EXPECT_EQ(started, (std::vector<std::string>{"free-1", "time-1", "performance-1", "pso-free-1", "pso-time-1",
+                                               "pso-performance-1", "free-2", "time-2", "performance-2",
+                                               "pso-free-2", "pso-time-2", "pso-performance-2"}))
+      << "every replicate 1 before any replicate 2";
+  c.replicates = 1;
   Reproduction(c, Dir("r"), StartMode::kNew).Run(Threads(2));
   const nlohmann::json manifest = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
   EXPECT_EQ(manifest.at("learners").size(), 2u);
