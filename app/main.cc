@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "evolve/source_commit.h"
 #ifdef WALKERS_HAVE_MPI
 #include "evolve/mpi_evaluator.h"
 #endif
@@ -84,6 +85,7 @@ std::unique_ptr<CLI::ExtrasError> UnknownArguments(CLI::App& app, const std::vec
 int RunCommandLine(int argc, char** argv) {
   CLI::App app{"Scaffolded bipedal walkers: a planar biped evolved with robotics scaffolded learning."};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("walkers, commit ") + walkers::SourceCommit());
 
   walkers::app::Command selected;
   walkers::app::AddSimulateCommand(app, &selected);

@@ -1,6 +1,6 @@
 // A walk recorded for people: every 30 Hz frame of one evaluation as the
 // points of the walker, in the JSON that the replay viewer
-// (app/replay_template.html) and the figure script (scripts/figures.py) read.
+// (app/replay_template.html) and the statistics package's figures (scripts/walkers_stats/figures.py) read.
 #pragma once
 
 #include <string>

@@ -232,6 +232,9 @@ def load_reproduction(run_dir):
                       ("ensemble", 1000)):
         rep[key] = count(manifest, key, path, "", 1, high)
     rep["seed"] = count(manifest, "seed", path, "", 0, 2 ** 32 - 1)
+    program = field(manifest, "program", path, "", dict)
+    rep["program"] = {"commit": field(program, "commit", path, "program.", str),
+                      "evaluation": field(program, "evaluation", path, "program.", dict)}
     rep["scaffolds"] = named_list(manifest, "scaffolds", path, (("paper_tripod_finals", 0, 3),))
     rep["learners"] = named_list(manifest, "learners", path)
     rep["runs"] = [load_run(run_dir, run, path, f"runs[{i}].", rep["scaffolds"], rep["learners"],

@@ -54,7 +54,7 @@ def summarize(rep, authors):
     seconds = sum(r["evaluation_seconds"] for r in runs)
     summary = {
         **{k: rep[k] for k in ("preset", "generations", "replicates", "seed", "population",
-                               "ensemble", "best_biped", "best_tripod")},
+                               "ensemble", "program", "best_biped", "best_tripod")},
         "learners": [l["name"] for l in rep["learners"]],
         "runs": runs,
         "evaluations": evaluations,
@@ -166,6 +166,9 @@ def markdown(summary, rep):
                   f"{finalists - len(missed)} of the {finalists} finalists"
                   + ("." if not missed else f" (not: {', '.join(missed)}: those runs were made "
                      "by other numerics)."))
+    intro += (f" The program that wrote `reproduction.json` was built from commit "
+              f"`{rep['program']['commit']}`; the runs' evaluation settings are in `summary.json` "
+              "(`program.evaluation`) and in each run's `config.json`.")
     parts = [title + "\n", intro + "\n", beside_authors_markdown(summary["beside_authors"],
                                                                  rep["scaffolds"]),
              claims.markdown(summary["claims"]), bests_markdown(summary)]

@@ -27,6 +27,9 @@ expect() {
 
 genome=$src/data/genomes/default.json
 
+# the commit the program was built from (or "unknown" outside a git checkout)
+expect 0 '^walkers, commit ([0-9a-f]{12}(-dirty)?|unknown)$' -- --version
+
 # simulate: the JSON summary line and a trajectory with the documented columns
 expect 0 '^\{"cvode_steps":[0-9]+,"failure":null,"rhs_evals":[0-9]+,"sim_time":0\.5,"wall_ms":' -- \
   simulate --genome "$genome" --duration 0.5 --trajectory "$tmp/t.csv"

@@ -42,6 +42,9 @@ for key in ("claims", "beside_authors", "rescores", "runs", "best_biped", "evals
 assert set(s["claims"]["cases"]) == {"free", "time", "performance"}, s["claims"]["cases"].keys()
 assert len(s["runs"]) == 3
 assert s["beside_authors"]["checkout"] is None and "no checkout" in s["beside_authors"]["note"]
+# what made them: the program's commit and the evaluation settings the runs used
+assert s["program"]["commit"], s["program"]
+assert s["program"]["evaluation"]["restart_at_ticks"] in (True, False), s["program"]
 PY
 # the finals re-scored by this build: the unperturbed member scores what the run
 # recorded, and the claims' final bests are the ensembles' medians

@@ -129,7 +129,9 @@ def write_reproduction(root, runs, generations=None, learners=("ga",), ensemble=
         "preset": "original",
         "generations": generations or max(len(r["fitness"]) for r in runs),
         "replicates": max(r["replicate"] for r in runs), "seed": 1, "population": POPULATION,
-        "ensemble": ensemble, "scaffolds": scaffolds, "learners": [LEARNERS[l] for l in learners],
+        "ensemble": ensemble,
+        "program": {"commit": "0123456789ab", "evaluation": {"relative_tolerance": 1e-7}},
+        "scaffolds": scaffolds, "learners": [LEARNERS[l] for l in learners],
         "runs": listed, "best_biped": pick("biped"), "best_tripod": pick("tripod")})
     if walks is not None:
         write_json(os.path.join(rep, "walks.json"), walks)

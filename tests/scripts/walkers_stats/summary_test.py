@@ -47,6 +47,10 @@ class SummaryTest(unittest.TestCase):
                     "## The best biped and the best tripod", "## Figures"]
         self.assertEqual(sorted(sections, key=md.index), sections)
         self.assertIn("| time | 4 |", md)
+        # what made the runs: the program's commit and settings, carried over
+        self.assertEqual(s["program"]["commit"], "0123456789ab")
+        self.assertEqual(s["program"]["evaluation"]["relative_tolerance"], 1e-7)
+        self.assertIn("commit `0123456789ab`", md)
         # again: the same bytes
         first = (self.read("summary.json"), md)
         status, _, err = run_statistics("summary", self.rep)
