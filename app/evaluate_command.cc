@@ -16,6 +16,7 @@
 #include "app/trajectory_csv.h"
 #include "control/accuracy.h"
 #include "control/evaluation.h"
+#include "control/evaluation_json.h"
 #include "control/genome.h"
 #include "control/step_profile.h"
 #include "dynamics/observation.h"
@@ -83,27 +84,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
   const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, opt.ensemble, &r);
 
   if (opt.json) {
-    nlohmann::json out = {{"fitness", r.fitness},
-                          {"distance", r.distance},
-                          {"leg_length", r.leg_length},
-                          {"fell", r.fell},
-                          {"failure", nullptr},
-                          {"footsteps", r.footsteps},
-                          {"trunk_contact_fraction", r.trunk_contact_fraction},
-                          {"gait", GaitName(r.gait)},
-                          {"sim_time", r.sim_time},
-                          {"wall_ms", r.wall_ms},
-                          {"cvode_steps", r.cvode_steps},
-                          {"rhs_evals", r.rhs_evals},
-                          {"preset", r.preset}};
-    if (!r.failure.empty()) out["failure"] = r.failure;
-    if (opt.ensemble > 0) {
-      out["ensemble"] = {{"size", opt.ensemble},           {"fitness", ensemble.fitness},
-                         {"fitness_median", ensemble.Median()}, {"fitness_min", ensemble.Min()},
-                         {"fitness_max", ensemble.Max()},   {"bipeds", ensemble.bipeds},
-                         {"tripods", ensemble.tripods},
-                         {"falls", ensemble.falls}};
-    }
+    const nlohmann::json out = EvaluationToJson(r, opt.ensemble > 0 ? &ensemble : nullptr);
     std::cout << out.dump() << std::endl;
   } else {
     std::printf("fitness %.4f  (distance %.3f m over leg length %.3f m)\n", r.fitness, r.distance, r.leg_length);

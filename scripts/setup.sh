@@ -4,7 +4,8 @@
 #   setup.sh            what building and running need
 #   setup.sh --test     and what the tests need: Chromium, to check the replay page;
 #                       clang and its libFuzzer runtime, for the loaders' fuzz targets;
-#                       Open MPI, for the runs shared over MPI ranks (docs/cluster.md)
+#                       Open MPI, for the runs shared over MPI ranks (docs/cluster.md);
+#                       pybind11, NumPy and pytest, for the Python module and its tests (docs/python.md)
 #   setup.sh --authors  and what building the authors' program for scripts/compare_authors.py needs
 set -euo pipefail
 
@@ -14,7 +15,8 @@ packages=(
   python3 python3-matplotlib python3-scipy
 )
 case "${1:-}" in
-  --test) packages+=(chromium clang libclang-rt-14-dev libopenmpi-dev openmpi-bin) ;;
+  --test) packages+=(chromium clang libclang-rt-14-dev libopenmpi-dev openmpi-bin
+                   pybind11-dev python3-numpy python3-pytest) ;;
   --authors) packages+=(libsimbody-dev libarmadillo-dev) ;;
 esac
 
