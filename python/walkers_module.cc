@@ -25,6 +25,7 @@
 #include "control/genome.h"
 #include "control/input_file.h"
 #include "control/preset.h"
+#include "control/walk_record.h"
 #include "evolve/evaluator.h"
 #include "evolve/finals.h"  // kMaxEnsemble
 #include "evolve/scaffold.h"
@@ -160,6 +161,24 @@ py::dict Evaluate1(const py::handle& genome_object, const std::string& preset_na
   return ToPython(out);
 }
 
+// A walk recorded at 30 Hz (control/walk_record.h), its frames as NumPy
+// arrays, one row a frame: for plotting.
+py::dict RecordWalk1(const py::handle& genome_object, const std::string& preset_name) {
+  const Genome genome = GenomeOf(genome_object, "genome");
+  const Preset preset = PresetByName(preset_name);
+  nlohmann::json walk;
+  {
+    py::gil_scoped_release no_gil;
+    walk = RecordWalk(genome, preset, "").json;
+  }
+  walk.erase("title");  // the replay page's, not the walk's
+  py::dict out = ToPython(walk);
+  const py::module_ numpy = py::module_::import("numpy");
+  py::dict frames = out["frames"];
+  for (const auto& [key, value] : frames) frames[key] = numpy.attr("asarray")(value);
+  return out;
+}
+
 // The thread evaluator of the last batch, kept with its threads started for
 // the next batch on as many threads. A batch holds its own reference, so a
 // batch on other threads at the same time may replace it safely.
@@ -271,6 +290,9 @@ PYBIND11_MODULE(walkers, m) {
         py::arg("threads") = py::none(),
         "Evaluates an (n, 18) array, one genome per row, on `threads` threads (default: every core); "
         "returns arrays of fitness, gait, fell, footsteps and cvode_steps");
+
+  m.def("record_walk", &RecordWalk1, py::arg("genome"), py::arg("preset") = "original",
+        "One evaluation recorded at 30 Hz: the result's fields, the body's sizes and the frames as arrays");
 
   m.def(
       "scaffold_cases", [] { return ScaffoldCaseNames(); }, "The scaffolds' names in the paper's order");

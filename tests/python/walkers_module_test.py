@@ -95,6 +95,20 @@ def test_paper_preset_is_passed_on():
     assert (ours["fitness"], ours["cvode_steps"]) == (cli["fitness"], cli["cvode_steps"])
 
 
+def test_recorded_walk_is_the_evaluation_frame_by_frame():
+    walk = walkers.record_walk(str(FALLER))
+    result = walkers.evaluate(str(FALLER))
+    for key in ("fitness", "gait", "leg_length", "preset"):
+        assert walk[key] == result[key], key
+    frames = walk["frames"]
+    t = frames["t"]
+    assert t[0] == 0 and np.all(np.diff(t) > 0) and t[-1] <= 15
+    assert frames["trunk"].shape == (len(t), 3)  # x, y, pitch
+    assert all(len(v) == len(t) for v in frames.values())
+    assert frames["planted_l"].dtype == bool
+    assert set(walk["body"]) >= {"half_body_x", "femur_length"}
+
+
 def batch_genomes():
     """Four cheap genomes, two of them perturbed so that the rows differ."""
     default = walkers.genome_array(walkers.default_genome())
