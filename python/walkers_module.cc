@@ -57,11 +57,16 @@ nlohmann::json JsonOfDict(const py::dict& dict) {
     const std::string name = key.cast<std::string>();
     if (py::isinstance<py::bool_>(value)) {
       object[name] = value.cast<bool>();
-    } else if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
-               py::hasattr(value, "__float__")) {
-      object[name] = value.cast<double>();
-    } else {
-      object[name] = py::str(value).cast<std::string>();
+      continue;
+    }
+    try {
+      object[name] = value.cast<double>();  // what float() takes
+    } catch (const py::cast_error&) {
+      // not a number (an array, text, an int too large for a double): its text, shortened
+      constexpr std::size_t kShown = 40;
+      std::string text = py::str(value).cast<std::string>();
+      if (text.size() > kShown) text = text.substr(0, kShown) + "...";
+      object[name] = text;
     }
   }
   return object;

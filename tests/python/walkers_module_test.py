@@ -151,7 +151,9 @@ def out_of_range(name, value):
     (lambda: walkers.evaluate(out_of_range("kStep", 900.0)), ["kStep", "900", "[0, 800]"]),
     (lambda: walkers.evaluate(out_of_range("halfBodyX", 0.001)), ["halfBodyX", "[0.01, 0.9]"]),
     (lambda: walkers.evaluate(out_of_range("femurLength", float("nan"))), ["femurLength"]),
-    (lambda: walkers.evaluate(out_of_range("ky", "hard")), ["ky"]),
+    (lambda: walkers.evaluate(out_of_range("ky", "hard")), ["ky", "hard"]),
+    (lambda: walkers.evaluate(out_of_range("ky", np.ones(2))), ["ky"]),
+    (lambda: walkers.evaluate(out_of_range("ky", 10**400)), ["ky", "1000"]),
     (lambda: walkers.evaluate({**walkers.default_genome(), "tailLength": 1.0}), ["tailLength"]),
     (lambda: walkers.evaluate({k: v for k, v in walkers.default_genome().items() if k != "hipMass"}),
      ["hipMass"]),
@@ -165,7 +167,7 @@ def out_of_range(name, value):
     (lambda: walkers.evaluate_batch(np.vstack([batch_genomes()[:2], walkers.gene_ceilings * 2])),
      ["genomes[2]", "halfBodyX"]),
     (lambda: walkers.scaffold_ceiling("slow", 0), ["slow", "performance"]),
-], ids=["above", "below", "nan", "text", "unknown", "missing", "gene count", "no file", "preset", "ensemble",
+], ids=["above", "below", "nan", "text", "array", "huge", "unknown", "missing", "gene count", "no file", "preset", "ensemble",
         "columns", "rows", "threads", "row", "scaffold"])
 def test_bad_input_is_a_value_error_naming_the_field(call, words):
     with pytest.raises(ValueError) as error:
