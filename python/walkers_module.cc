@@ -4,20 +4,20 @@
 // batches of evaluations on the project's own thread evaluator
 // (evolve/evaluator.h) with the GIL released. Bad input raises ValueError
 // with the project's own messages (the gene, its value and its range).
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <mutex>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "control/accuracy.h"
 #include "control/evaluation.h"
@@ -210,8 +210,9 @@ py::dict EvaluateBatch(const py::handle& genomes_object, const std::string& pres
   const py::ssize_t n = rows.shape(0);
   std::vector<Genome> genomes;
   genomes.reserve(n);
-  for (py::ssize_t i = 0; i < n; ++i)
+  for (py::ssize_t i = 0; i < n; ++i) {
     genomes.push_back(GenomeOfGenes(rows.data(i, 0), "genomes[" + std::to_string(i) + "]"));
+  }
 
   std::vector<EvaluationResult> results(n);
   {

@@ -3,6 +3,9 @@
 // reason, the ensemble's summary only when there is an ensemble.
 #include "control/evaluation_json.h"
 
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

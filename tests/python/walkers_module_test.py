@@ -7,6 +7,7 @@ ctest runs it with PYTHONPATH at the module, WALKERS_PROGRAM the walkers
 program and WALKERS_SOURCE_DIR the repository; by hand, from the repository
 after a build: PYTHONPATH=build/python python3 -m pytest tests/python
 """
+import csv
 import json
 import os
 import pathlib
@@ -134,6 +135,24 @@ def test_batch_is_identical_on_1_and_2_threads_and_equals_evaluate():
     assert list(one["cvode_steps"]) == [s["cvode_steps"] for s in singles]
     assert one["fell"][1] and not one["fell"][0]  # the faller falls, the initial individual stands
     assert one["fitness"][0] != one["fitness"][2]  # the rows are evaluated as given
+
+
+def test_batch_equals_a_runs_recorded_evaluations(tmp_path):
+    # a generation of `walkers evolve`, evaluated on the same evaluator: its
+    # recorded genes (written exactly) give its recorded results again
+    subprocess.run([PROGRAM, "evolve", "--case", "performance", "--generations", "1", "--seed", "3", "--threads",
+                    "2", "--population", "6", "--archive", "6", "--mutation-children", "6", "--out",
+                    str(tmp_path / "run")], check=True, capture_output=True)
+    with open(tmp_path / "run" / "evaluations.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 6
+    genomes = np.array([[float(row[name]) for name in walkers.gene_names] for row in rows])
+    out = walkers.evaluate_batch(genomes, threads=2)
+    assert list(out["fitness"]) == [float(row["fitness"]) for row in rows]
+    assert list(out["cvode_steps"]) == [int(row["cvode_steps"]) for row in rows]
+    assert list(out["gait"]) == [row["gait"] for row in rows]
+    assert list(out["fell"]) == [row["fell"] == "1" for row in rows]
+    assert list(out["footsteps"]) == [int(row["footsteps"]) for row in rows]
 
 
 def test_empty_batch():
