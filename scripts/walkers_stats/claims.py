@@ -127,6 +127,14 @@ def compared_finals(claim, text, runs, case_x, case_y):
     return None, finals(of_case(runs, case_x)), finals(of_case(runs, case_y))
 
 
+def mann_whitney(x, y, alternative, direction):
+    """The one-sided Mann-Whitney test of x against y ('greater' or 'less'): U, p and the
+    test's record for summary.json, named with its direction (e.g. "case 3 > case 1")."""
+    u, p, exact = rank_sum_test(x, y, alternative)
+    return u, p, {"name": f"Mann-Whitney U, one-sided ({direction})", "statistic": u, "p": p,
+                  "exact": exact}
+
+
 def two_sample_effect(name, statistic, x, y):
     """An effect of x against y: statistic(x, y) with its bootstrap interval."""
     return {"name": name, "value": float(statistic(x, y)),
@@ -155,7 +163,7 @@ def claim_case3_above_case1(rep):
     gap, x, y = compared_finals("case3_above_case1", text, rep["runs"], c3, c1)
     if gap:
         return gap
-    u, p, exact = rank_sum_test(x, y, "greater")
+    u, p, test = mann_whitney(x, y, "greater", "case 3 > case 1")
     delta = two_sample_effect("Cliff's delta", cliffs_delta, x, y)
     shift = two_sample_effect("Hodges-Lehmann shift", hodges_lehmann, x, y)
     numbers = (f"final best {np.mean(x):.2f} against {np.mean(y):.2f} (means of the re-scored "
@@ -164,8 +172,6 @@ def claim_case3_above_case1(rep):
                f"Hodges–Lehmann shift {shift['value']:+.2f} "
                f"{fmt_interval(shift['interval'], '{:+.2f}')}; "
                f"one-sided Mann–Whitney U = {u:g}, p = {fmt_p(p)}")
-    test = {"name": "Mann-Whitney U, one-sided (case 3 > case 1)", "statistic": u, "p": p,
-            "exact": exact}
     return finding("case3_above_case1", text, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
                    numbers, {"test": test, "n": [len(x), len(y)],
                              "hodges_lehmann": {"value": shift["value"],
@@ -208,15 +214,13 @@ def claim_case2_below_case1(rep):
     gap, x, y = compared_finals("case2_below_case1", text, rep["runs"], c2, c1)
     if gap:
         return gap
-    u, p, exact = rank_sum_test(x, y, "less")
+    u, p, test = mann_whitney(x, y, "less", "case 2 < case 1")
     ratio = two_sample_effect("ratio of the final mean best fitness (re-scored medians), "
                               "case 2 / case 1", ratio_of_means, x, y)
     numbers = (f"case 2's final mean best is {100 * ratio['value']:.1f} % of case 1's "
                f"{fmt_interval(ratio['interval'], '{:.1f}', 100, ' %')}, Cliff's δ = "
                f"{float(cliffs_delta(x, y)):+.2f}; one-sided Mann–Whitney U = {u:g}, "
                f"p = {fmt_p(p)}")
-    test = {"name": "Mann-Whitney U, one-sided (case 2 < case 1)", "statistic": u, "p": p,
-            "exact": exact}
     return finding("case2_below_case1", text, p, ratio, -1, 1.0, paper, n_label(len(x), len(y)),
                    numbers, {"test": test, "n": [len(x), len(y)],
                              "cliffs_delta": float(cliffs_delta(x, y))})
@@ -307,7 +311,7 @@ def claim_case2_later_biped(rep):
     never = never_generation(runs)
     x = [time_to_biped(r, True, never) for r in of_case(runs, c2)]
     y = [time_to_biped(r, True, never) for r in of_case(runs, c1)]
-    u, p, exact = rank_sum_test(x, y, "greater")
+    u, p, test = mann_whitney(x, y, "greater", "case 2 later than case 1")
     delta = two_sample_effect("Cliff's delta of the generation of a biped for good, case 2 vs "
                               "case 1", cliffs_delta, x, y)
     numbers = (f"median generation {fmt_generation(median_time(x), never)} against "
@@ -315,8 +319,6 @@ def claim_case2_later_biped(rep):
                f"{y.count(never)}), Cliff's δ = {delta['value']:+.2f} "
                f"{fmt_interval(delta['interval'], '{:+.2f}')}; one-sided Mann–Whitney "
                f"U = {u:g}, p = {fmt_p(p)}")
-    test = {"name": "Mann-Whitney U, one-sided (case 2 later than case 1)", "statistic": u,
-            "p": p, "exact": exact}
     return finding("case2_later_biped", text, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
                    numbers, {"test": test, "n": [len(x), len(y)]})
 
