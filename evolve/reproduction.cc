@@ -318,7 +318,7 @@ void WriteReproductionData(const ReproductionConfig& config, const std::string& 
                          {"ensemble", config.ensemble},
                          // the commit of the program that wrote this file, and the runs' evaluation settings
                          {"program", {{"commit", SourceCommit()},
-                                      {"evaluation", RunConfigToJson(plan.front().config).at("evaluation")}}},
+                                      {"evaluation", EvaluationSettingsToJson(config.evaluation)}}},
                          {"scaffolds", ScaffoldsJson()},
                          {"learners", LearnersJson(config.learners)},
                          {"runs", runs},

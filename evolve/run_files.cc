@@ -249,10 +249,15 @@ void RunConfig::Validate() const {
   RequireInRange("evaluation.max_order", evaluation.integrator.max_order, 1, kMaxBdfOrder);
 }
 
+json EvaluationSettingsToJson(const EvaluationSettings& settings) {
+  json evaluation = {{"max_order", settings.integrator.max_order},
+                     {"restart_at_ticks", settings.integrator.restart_on_torque_change}};
+  for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, settings);
+  return evaluation;
+}
+
 json RunConfigToJson(const RunConfig& c) {
-  json evaluation = {{"max_order", c.evaluation.integrator.max_order},
-                     {"restart_at_ticks", c.evaluation.integrator.restart_on_torque_change}};
-  for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, c.evaluation);
+  const json evaluation = EvaluationSettingsToJson(c.evaluation);
   json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
               {"preset", c.preset.name},
               {"generations", c.generations},

@@ -47,6 +47,8 @@ struct RunConfig {
 // config.json's content. "learner" is written only for a learner other than
 // the paper's GA, so that the GA's runs keep their files.
 nlohmann::json RunConfigToJson(const RunConfig& config);
+// The evaluation settings as config.json's "evaluation" object records them.
+nlohmann::json EvaluationSettingsToJson(const EvaluationSettings& settings);
 // config.json's content: every field present, typed and in range, and no
 // other. Throws std::runtime_error whose message starts with `source`.
 RunConfig RunConfigFromJson(const nlohmann::json& json, const std::string& source);
