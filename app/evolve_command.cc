@@ -61,7 +61,7 @@ void AddEvolveCommand(CLI::App& app, Command* selected) {
       ->required()
       ->check(CLI::IsMember(ScaffoldCaseNames()));
   sub->add_option("--learner", opt->learner, "Learner: the paper's GA or one of pagmo2's (docs/learners.md)")
-      ->check(CLI::IsMember(LearnerNames()))
+      ->check(CLI::IsMember(BuiltInLearnerNames()))
       ->capture_default_str();
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations to run")

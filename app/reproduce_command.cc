@@ -129,7 +129,7 @@ void AddReproduceCommand(CLI::App& app, Command* selected) {
   sub->add_option("--learners", opt->learners,
                   "Learners to compare, comma-separated; the first is the one the paper's figures show")
       ->delimiter(',')
-      ->check(CLI::IsMember(LearnerNames()))
+      ->check(CLI::IsMember(BuiltInLearnerNames()))
       ->capture_default_str();
   AddPresetOption(sub, &opt->preset);
   sub->add_option("--generations", opt->generations, "Generations per run")

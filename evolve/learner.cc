@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "control/input_file.h"
+#include "evolve/external_learner.h"
 #include "evolve/genetic_algorithm.h"
 #include "evolve/pagmo_learners.h"
 
@@ -92,6 +93,9 @@ const std::vector<LearnerSpec>& Learners() {
       {"cmaes", "CMA-ES", "tab:red", kCmaesAbout, kCmaesMinPopulation, MakeCmaes},
       {"sade", "self-adaptive DE", "tab:olive", kSadeAbout, kSadeMinPopulation, MakeSade},
       {"pso", "particle swarm", "tab:brown", kParticleSwarmAbout, kParticleSwarmMinPopulation, MakeParticleSwarm},
+      {"external", "external (Python)", "tab:cyan",
+       "an optimiser outside walkers, proposing through the Python module's walkers.Run (docs/python.md)",
+       kMinPopulation, MakeExternalLearner, true},
   };
   return learners;
 }
@@ -101,6 +105,14 @@ const LearnerSpec& DefaultLearner() { return Learners().front(); }
 std::vector<std::string> LearnerNames() {
   std::vector<std::string> names;
   for (const LearnerSpec& spec : Learners()) names.push_back(spec.name);
+  return names;
+}
+
+std::vector<std::string> BuiltInLearnerNames() {
+  std::vector<std::string> names;
+  for (const LearnerSpec& spec : Learners()) {
+    if (!spec.external) names.push_back(spec.name);
+  }
   return names;
 }
 

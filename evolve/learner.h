@@ -4,8 +4,10 @@
 // run's checkpoint, so that a resumed run is the uninterrupted one. The run
 // (evolve/run.h) owns the rest: the scaffold, the archive, evaluation, files
 // and progress. Learners() is the one list of learners: the paper's genetic
-// algorithm (the default) and pagmo2's CMA-ES, self-adaptive differential
-// evolution and particle swarm (evolve/pagmo_learners.h).
+// algorithm (the default); pagmo2's CMA-ES, self-adaptive differential
+// evolution and particle swarm (evolve/pagmo_learners.h); and the external
+// learner, an optimiser outside walkers proposing through the Python module
+// (evolve/external_learner.h).
 #pragma once
 
 #include <cstdint>
@@ -55,6 +57,9 @@ struct LearnerSpec {
   int min_population;  // the fewest children a generation may have for it
   // a learner of this kind for a run of `ga`'s sizes and `seed`
   std::unique_ptr<Learner> (*make)(const LearnerSpec& self, const GeneticAlgorithmConfig& ga, std::uint64_t seed);
+  // proposes from a program outside walkers (ExternalLearner): its runs are
+  // driven through the Python module, never by `walkers evolve` or `reproduce`
+  bool external = false;
 };
 
 class Learner {
@@ -109,7 +114,10 @@ void AdmitChildren(Learner& learner, const BreedingInputs& in, std::vector<Indiv
 // The learners; the first, the paper's GA, is the default.
 const std::vector<LearnerSpec>& Learners();
 const LearnerSpec& DefaultLearner();
+// every learner's name, as run files may name it
 std::vector<std::string> LearnerNames();
+// the learners walkers runs itself (`evolve --learner`, `reproduce --learners`)
+std::vector<std::string> BuiltInLearnerNames();
 // Throws std::invalid_argument naming the allowed values.
 const LearnerSpec& LearnerByName(const std::string& name);
 // LearnerByName(name)'s learner for a run of `ga`'s sizes and `seed`.

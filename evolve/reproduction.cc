@@ -21,7 +21,11 @@ using nlohmann::json;
 void ReproductionConfig::Validate() const {
   if (learners.empty()) throw std::invalid_argument("learners: at least one learner is needed");
   for (std::size_t i = 0; i < learners.size(); ++i) {
-    LearnerByName(learners[i]);
+    if (LearnerByName(learners[i]).external) {
+      throw std::invalid_argument("learners: '" + learners[i] +
+                                  "' proposes from a program outside walkers; a reproduction runs the built-in "
+                                  "learners only (the Python module's walkers.Run drives an external one)");
+    }
     for (std::size_t j = 0; j < i; ++j) {
       if (learners[j] == learners[i]) throw std::invalid_argument("learners: '" + learners[i] + "' is given twice");
     }

@@ -27,12 +27,17 @@ void RequireSame(const json& stored, const json& requested, const std::string& s
 
 }  // namespace
 
-EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, Evaluator& evaluator)
+EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, Evaluator& evaluator,
+                           std::unique_ptr<Learner> learner)
     : config_(config), files_(dir), evaluator_(&evaluator), archive_(config.ga.archive_size) {
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
   scaffold_ = MakeScaffold(config.scaffold_case, config.preset);
-  learner_ = MakeLearner(config.learner, config.ga, config.seed);
+  if (learner && learner->spec().name != config.learner) {
+    throw std::invalid_argument("the learner given is " + std::string(learner->spec().name) + ", not the run's (" +
+                                config.learner + ")");
+  }
+  learner_ = learner ? std::move(learner) : MakeLearner(config.learner, config.ga, config.seed);
   StartedFolder started = StartResultsFolder(dir, "run", mode, files_.checkpoint, [&] {
     FolderContents held{RunFiles::Names(), "", false};
     for (auto file : RunFiles::All()) held.any = held.any || fs::exists(files_.*file);

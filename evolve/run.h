@@ -31,8 +31,11 @@ class EvolutionRun {
   // message naming the directory or file on any problem (holds a run, no run
   // to resume, unwritable, mismatched config, invalid checkpoint or CSV files,
   // a missing checkpoint beside results). Resuming never creates the directory.
-  // The evaluator must outlive the run.
-  EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, Evaluator& evaluator);
+  // The evaluator must outlive the run. `learner`, when given, is the learner
+  // to run (one of config.learner's kind, an ExternalLearner with its source,
+  // say); by default MakeLearner's.
+  EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, Evaluator& evaluator,
+               std::unique_ptr<Learner> learner = nullptr);
   // Under kForce, destroyed before the new run's first checkpoint, it puts the
   // old run back.
   ~EvolutionRun();

@@ -610,6 +610,7 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
                  title="final best: bars the mean, dots the replicates, "
                        "figures above: runs ending as tripods")
     panels = []
+    curves_top = 1.0
     for i, learner in enumerate(learners):
         ax = fig.add_subplot(grid[1, i], sharey=panels[0] if panels else None)
         panels.append(ax)
@@ -619,6 +620,7 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
             if group:
                 g, y = case_curves(f"{learner['name']} {scaffold['name']}", group)
                 ax.plot(g, y.mean(axis=0), color=scaffold["colour"])
+                curves_top = max(curves_top, float(y.mean(axis=0).max()))
         ax.set_title(learner["label"])
         ax.set_xlim(0, generations)
         ax.set_xlabel("generation")
@@ -626,7 +628,7 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
         if i == 0:
             ax.set_ylabel("mean best fitness")
     # one scale for every learner's panel, from 0 to the highest mean best
-    panels[0].set_ylim(0, 1.05 * top)
+    panels[0].set_ylim(0, 1.05 * curves_top)
     save(fig, out_dir, "learners")
 
 

@@ -121,6 +121,9 @@ for learner in cmaes sade pso; do
   echo "ok: $learner: SIGKILLed run on two threads resumed to the one-thread run's files"
 done
 expect nonzero "--learner: nsga2 not in \{ga,cmaes,sade,pso\}" -- evolve --case free --learner nsga2 --out "$tmp/x"
+# the external learner's runs are driven from Python (walkers.Run)
+expect nonzero "--learner: external not in \{ga,cmaes,sade,pso\}" -- evolve --case free --learner external --out "$tmp/x"
+expect nonzero "external not in \{ga,cmaes,sade,pso\}" -- reproduce --learners ga,external --out "$tmp/x"
 expect nonzero 'population = 6 is outside its allowed range \[7, 100000\] for the learner sade' -- \
   evolve --case free --learner sade --population 6 --mutation-children 3 --out "$tmp/x"
 expect nonzero "learners: 'cmaes' is given twice" -- reproduce --learners cmaes,ga,cmaes --out "$tmp/x"

@@ -50,7 +50,8 @@ Genome Shifted(double kx) {
 }
 
 TEST(LearnersTest, TheListNamesEachLearnerOnceWithTheGaFirst) {
-  EXPECT_EQ(LearnerNames(), (std::vector<std::string>{"ga", "cmaes", "sade", "pso"}));
+  EXPECT_EQ(LearnerNames(), (std::vector<std::string>{"ga", "cmaes", "sade", "pso", "external"}));
+  EXPECT_EQ(BuiltInLearnerNames(), (std::vector<std::string>{"ga", "cmaes", "sade", "pso"}));
   EXPECT_STREQ(DefaultLearner().name, "ga");
   for (const LearnerSpec& spec : Learners()) {
     EXPECT_EQ(&LearnerByName(spec.name), &spec);
@@ -61,7 +62,7 @@ TEST(LearnersTest, TheListNamesEachLearnerOnceWithTheGaFirst) {
     LearnerByName("nsga2");
     FAIL() << "accepted an unknown learner";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown learner 'nsga2': allowed values are ga, cmaes, sade, pso");
+    EXPECT_STREQ(e.what(), "unknown learner 'nsga2': allowed values are ga, cmaes, sade, pso, external");
   }
 }
 

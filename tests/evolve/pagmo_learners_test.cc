@@ -80,7 +80,7 @@ struct Driven {
 
 class EveryLearnerTest : public ::testing::TestWithParam<std::string> {};
 
-INSTANTIATE_TEST_SUITE_P(Learners, EveryLearnerTest, ::testing::ValuesIn(LearnerNames()),
+INSTANTIATE_TEST_SUITE_P(Learners, EveryLearnerTest, ::testing::ValuesIn(BuiltInLearnerNames()),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST_P(EveryLearnerTest, ProposalsRespectTheScaffoldsCeilingAndTheGenesBounds) {

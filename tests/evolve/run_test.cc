@@ -13,48 +13,18 @@
 
 #include "evolve/files.h"
 #include "tests/evolve/individuals.h"
+#include "tests/evolve/small_runs.h"
 #include "tests/temp_dir_test.h"
 
 namespace walkers {
 namespace {
 namespace fs = std::filesystem;
+using testing::ExpectSameRun;
+using testing::SmallRun;
 using testing::Threads;
+using testing::WithoutTimingColumn;
 
-// A small, quick run: short evaluations, small population; the logic is the
-// full one.
-RunConfig SmallRun(ScaffoldCase c = ScaffoldCase::kPerformance, int generations = 4) {
-  RunConfig config;
-  config.scaffold_case = c;
-  config.generations = generations;
-  config.seed = 42;
-  config.ga.population = 8;
-  config.ga.archive_size = 8;
-  config.ga.mutation_children = 5;
-  config.evaluation.duration = 3.0;
-  return config;
-}
-
-// a file with the last field of every line removed (the wall-clock columns:
-// wall_ms of evaluations.csv, evals_per_s of generations.csv)
-std::string WithoutTimingColumn(const std::string& path) {
-  std::istringstream in(ReadFile(path));
-  std::string line, out;
-  while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
-  return out;
-}
-
-class RunTest : public TempDirTest {
- protected:
-  void ExpectSameRun(const std::string& a, const std::string& b) {
-    const RunFiles fa(a), fb(b);
-    EXPECT_EQ(WithoutTimingColumn(fa.evaluations), WithoutTimingColumn(fb.evaluations));
-    EXPECT_EQ(WithoutTimingColumn(fa.generations), WithoutTimingColumn(fb.generations));
-    // checkpoint.json is internal: it records byte offsets, which the timing columns shift
-    for (auto file : {&RunFiles::archive, &RunFiles::best, &RunFiles::config}) {
-      EXPECT_EQ(ReadFile(fa.*file), ReadFile(fb.*file)) << fa.*file;
-    }
-  }
-};
+class RunTest : public TempDirTest {};
 
 TEST_F(RunTest, WritesEveryFileWithTheDocumentedColumns) {
   EvolutionRun run(SmallRun(), Dir("a"), StartMode::kNew, Threads(2));
@@ -443,7 +413,7 @@ class LearnerRunTest : public RunTest, public ::testing::WithParamInterface<std:
 };
 
 std::vector<std::string> LearnersBesideTheGa() {
-  std::vector<std::string> names = LearnerNames();
+  std::vector<std::string> names = BuiltInLearnerNames();
   names.erase(names.begin());
   return names;
 }
