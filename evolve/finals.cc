@@ -17,18 +17,81 @@ namespace {
 
 using nlohmann::json;
 
-// the settings as config.json writes them
-json SettingsJson(const EvaluationSettings& settings) {
-  RunConfig config;
-  config.evaluation = settings;
-  return RunConfigToJson(config).at("evaluation");
+// A best biped or tripod in finals.json: where it came from, its fitness and
+// gait, its genome; null when the run evaluated none.
+json FinalistToJson(const std::optional<Individual>& finalist) {
+  if (!finalist) return nullptr;
+  return {{"id", finalist->id()},
+          {"generation", finalist->generation},
+          {"child", finalist->child},
+          {"fitness", finalist->fitness()},
+          {"gait", GaitName(finalist->result.gait)},
+          {"genome", GenomeToJson(finalist->genome)}};
+}
+
+std::optional<Individual> FinalistFromJson(const JsonFields& f, const std::string& key, Gait gait,
+                                           const RunConfig& config) {
+  if (f.Get(key).is_null()) return std::nullopt;
+  const JsonFields e = f.Object(key);
+  e.RequireOnly({"id", "generation", "child", "fitness", "gait", "genome"});
+  Individual finalist;
+  finalist.generation = static_cast<int>(e.Integer("generation", 0, config.generations - 1));
+  finalist.child = static_cast<int>(e.Integer("child", 0, config.ga.population - 1));
+  if (e.String("id") != finalist.id()) e.Fail("id", "is not \"" + finalist.id() + "\", its generation and child");
+  finalist.result.fitness = e.Number("fitness");
+  if (e.String("gait") != GaitName(gait)) e.Fail("gait", "is not '" + std::string(GaitName(gait)) + "'");
+  finalist.result.gait = gait;
+  finalist.genome = GenomeFromJson(e.Get("genome"), f.source() + ": " + e.Name("genome"));
+  return finalist;
+}
+
+// DIR/finals.json of a run that finished config.generations
+RunFinals ReadFinalsFile(const RunFiles& files, const RunConfig& config, const Individual& final_best) {
+  const json j = LoadJsonFile(files.finals);
+  const JsonFields f(j, files.finals);
+  f.RequireOnly({"generations", "best_biped", "best_tripod"});
+  f.Integer("generations", config.generations, config.generations);
+  return {final_best, FinalistFromJson(f, "best_biped", Gait::kBiped, config),
+          FinalistFromJson(f, "best_tripod", Gait::kTripod, config)};
 }
 
 }  // namespace
 
+void WriteRunFinals(const std::string& dir, const RunConfig& config, const RunFinals& finals) {
+  const json out = {{"generations", config.generations},
+                    {"best_biped", FinalistToJson(finals.best_biped)},
+                    {"best_tripod", FinalistToJson(finals.best_tripod)}};
+  WriteFileAtomically(RunFiles(dir).finals, out.dump(2) + "\n");
+}
+
+bool KeptWithoutEvaluations(const std::string& dir, const RunConfig& config) {
+  const RunFiles files(dir);
+  if (std::filesystem::exists(files.evaluations) || !std::filesystem::exists(files.finals)) return false;
+  const RunConfig stored = RunConfigFromJson(LoadJsonFile(files.config), files.config);
+  json a = RunConfigToJson(stored), b = RunConfigToJson(config);
+  a["learner"] = stored.learner;
+  b["learner"] = config.learner;
+  a.erase("generations");  // a longer run asked for is refused below, by name
+  b.erase("generations");
+  if (a != b) {
+    throw std::runtime_error(files.config + ": this run's settings are not the reproduction's (" + a.dump() +
+                             " against " + b.dump() + ")");
+  }
+  const Checkpoint cp = ParseCheckpoint(ReadFile(files.checkpoint), stored, files.checkpoint);
+  if (cp.completed_generations != config.generations) {
+    throw std::runtime_error(files.dir + ": the run has " + std::to_string(cp.completed_generations) + " of " +
+                             std::to_string(config.generations) +
+                             " generations and no evaluations.csv: it cannot be continued without them");
+  }
+  return true;
+}
+
 RunFinals LoadRunFinals(const std::string& dir, const RunConfig& config) {
   const RunFiles files(dir);
   RunFinals finals{LoadArchive(files.archive, config).front(), std::nullopt, std::nullopt};
+  if (!std::filesystem::exists(files.evaluations) && std::filesystem::exists(files.finals)) {
+    return ReadFinalsFile(files, config, finals.final_best);
+  }
 
   CsvReader rows(ReadFile(files.evaluations), files.evaluations);
   const int generation = rows.Column("generation");
@@ -75,7 +138,7 @@ RescoreCache::RescoreCache(std::string path, const Preset& preset, const Evaluat
     const JsonFields f(j, path_);
     f.RequireOnly({"preset", "evaluation", "ensemble", "genomes"});
     // another preset, other settings or another size: none of its ensembles is of use
-    if (f.String("preset") != preset_.name || f.Get("evaluation") != SettingsJson(settings_) ||
+    if (f.String("preset") != preset_.name || f.Get("evaluation") != EvaluationSettingsToJson(settings_) ||
         f.Integer("ensemble", 1, kMaxEnsemble) != size_) {
       return;
     }
@@ -152,7 +215,7 @@ void RescoreCache::Write() const {
                        {"falls", e.falls}});
   }
   const json out = {
-      {"preset", preset_.name}, {"evaluation", SettingsJson(settings_)}, {"ensemble", size_}, {"genomes", genomes}};
+      {"preset", preset_.name}, {"evaluation", EvaluationSettingsToJson(settings_)}, {"ensemble", size_}, {"genomes", genomes}};
   WriteFileAtomically(path_, out.dump(1) + "\n");
 }
 

@@ -34,8 +34,21 @@ struct RunFinals {
 // Reads DIR/archive.json and DIR/evaluations.csv of the run configured as
 // `config`. Every generation in evaluations.csv must hold the run's population
 // of children: the statistics count a run's evaluations as population x
-// generations. Throws std::runtime_error naming the file.
+// generations. A finished run kept without its evaluations.csv (committed
+// results leave the per-evaluation data out) is read from DIR/finals.json,
+// which WriteRunFinals wrote. Throws std::runtime_error naming the file.
 RunFinals LoadRunFinals(const std::string& dir, const RunConfig& config);
+
+// Writes DIR/finals.json: the finished run's best biped and best tripod, read
+// from its evaluations, so that its statistics can be made again without them.
+void WriteRunFinals(const std::string& dir, const RunConfig& config, const RunFinals& finals);
+
+// Whether DIR holds a finished run kept without its evaluations.csv (and with
+// its finals.json): a run whose statistics can be made, but which cannot be
+// continued. Throws std::runtime_error naming the file when the run's
+// config.json is not `config`, or when it has not finished `config`'s
+// generations.
+bool KeptWithoutEvaluations(const std::string& dir, const RunConfig& config);
 
 // Ensembles of genomes at one preset, evaluation settings and ensemble size,
 // kept in a JSON file by genome, so that a reproduction resumed after its runs

@@ -194,6 +194,12 @@ void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observe
       const PlannedRun& run = plan_[index];
       try {
         const std::string run_dir = (fs::path(dir_) / run.name).string();
+        if (KeptWithoutEvaluations(run_dir, run.config)) {
+          // finished, its statistics made from its finals.json
+          std::lock_guard<std::mutex> lock(mutex);
+          if (observer.on_run_start) observer.on_run_start(run, run.config.generations);
+          continue;
+        }
         const bool started = fs::exists(RunFiles(run_dir).config);
         EvolutionRun evolution(run.config, run_dir, started ? StartMode::kResume : StartMode::kNew, evaluator);
         {
@@ -251,7 +257,10 @@ void WriteReproductionData(const ReproductionConfig& config, const std::string& 
   std::vector<RunFinals> finals;
   std::vector<Genome> genomes;
   for (const PlannedRun& run : plan) {
-    finals.push_back(LoadRunFinals((fs::path(dir) / run.name).string(), run.config));
+    const std::string run_dir = (fs::path(dir) / run.name).string();
+    finals.push_back(LoadRunFinals(run_dir, run.config));
+    // kept beside the evaluations, for the statistics of a copy without them
+    if (fs::exists(RunFiles(run_dir).evaluations)) WriteRunFinals(run_dir, run.config, finals.back());
     for (const std::optional<Individual>& f : {std::optional<Individual>(finals.back().final_best),
                                                finals.back().best_biped, finals.back().best_tripod}) {
       if (f) genomes.push_back(f->genome);

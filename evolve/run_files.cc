@@ -365,12 +365,14 @@ RunFiles::RunFiles(const std::string& d)
       generations((fs::path(d) / "generations.csv").string()),
       evaluations((fs::path(d) / "evaluations.csv").string()),
       archive((fs::path(d) / "archive.json").string()),
-      best((fs::path(d) / "best.json").string()) {}
+      best((fs::path(d) / "best.json").string()),
+      finals((fs::path(d) / "finals.json").string()) {}
 
 const std::vector<std::string RunFiles::*>& RunFiles::All() {
   static const std::vector<std::string RunFiles::*> all = {&RunFiles::config,      &RunFiles::checkpoint,
                                                            &RunFiles::generations, &RunFiles::evaluations,
-                                                           &RunFiles::archive,     &RunFiles::best};
+                                                           &RunFiles::archive,     &RunFiles::best,
+                                                           &RunFiles::finals};
   return all;
 }
 

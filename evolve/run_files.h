@@ -102,6 +102,8 @@ struct GenerationSummary {
 struct RunFiles {
   explicit RunFiles(const std::string& dir);
   std::string dir, config, checkpoint, generations, evaluations, archive, best;
+  // a finished run's finals (evolve/finals.h), for readers without evaluations.csv
+  std::string finals;
 
   // every run file above (not dir)
   static const std::vector<std::string RunFiles::*>& All();

@@ -43,6 +43,14 @@ class ReproductionTest : public TempDirTest {
     }
     return "";
   }
+  // resumes the reproduction in `dir` as `config`; how many batches of finals it re-scored
+  static int ResumeCountingRescores(const ReproductionConfig& config, const std::string& dir) {
+    int rescored = 0;
+    ReproductionObserver observer;
+    observer.on_rescore = [&](int, int) { ++rescored; };
+    Reproduction(config, dir, StartMode::kResume).Run(Threads(2), observer);
+    return rescored;
+  }
 };
 
 TEST_F(ReproductionTest, RefusesToReplaceOrToShareAReproduction) {
@@ -168,17 +176,12 @@ TEST_F(ReproductionTest, ReproductionJsonListsEachRunsFinalsAndTheirRescores) {
 TEST_F(ReproductionTest, AResumedReproductionTakesItsRescoresFromTheCache) {
   Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
   const std::string manifest = ReadFile(ReproductionFiles(Dir("r")).manifest);
-  int rescored = 0;
-  ReproductionObserver observer;
-  observer.on_rescore = [&](int, int) { ++rescored; };
-  Reproduction(Tiny(), Dir("r"), StartMode::kResume).Run(Threads(2), observer);
-  EXPECT_EQ(rescored, 0);
+  EXPECT_EQ(ResumeCountingRescores(Tiny(), Dir("r")), 0);
   EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).manifest), manifest);
   // another ensemble size: the finals again
   ReproductionConfig five = Tiny();
   five.ensemble = 5;
-  Reproduction(five, Dir("r"), StartMode::kResume).Run(Threads(2), observer);
-  EXPECT_GT(rescored, 0);
+  EXPECT_GT(ResumeCountingRescores(five, Dir("r")), 0);
   const nlohmann::json again = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
   EXPECT_EQ(again["runs"][0]["final_best"]["rescore"]["fitness"].size(), 5u);
 }
@@ -285,6 +288,34 @@ TEST_F(ReproductionTest, GrowsByResumingWithMoreReplicates) {
   EXPECT_EQ(RunFilesWithoutTiming(Dir("r") + "/time-1"), first);
   const auto manifest = nlohmann::json::parse(ReadFile(ReproductionFiles(Dir("r")).manifest));
   EXPECT_EQ(manifest.at("runs").size(), 6u);
+}
+
+// Committed results leave each run's evaluations.csv out: the statistics are
+// made again from what is kept (finals.json, the re-score cache).
+TEST_F(ReproductionTest, AResumeWithoutTheRunsEvaluationsRemakesTheSameStatistics) {
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2));
+  const std::string manifest = ReadFile(ReproductionFiles(Dir("r")).manifest);
+  for (const PlannedRun& run : PlanRuns(Tiny())) {
+    const RunFiles files(Dir("r") + "/" + run.name);
+    ASSERT_TRUE(fs::exists(files.finals)) << files.finals;
+    fs::remove(files.evaluations);
+  }
+  EXPECT_EQ(ResumeCountingRescores(Tiny(), Dir("r")), 0);
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("r")).manifest), manifest);
+
+  // such a run cannot be continued, and a damaged finals.json is named
+  ReproductionConfig longer = Tiny();
+  longer.generations = 2;
+  EXPECT_NE(Error([&] { Reproduction(longer, Dir("r"), StartMode::kResume).Run(Threads(2)); })
+                .find("no evaluations.csv: it cannot be continued without them"),
+            std::string::npos);
+  const std::string finals = RunFiles(Dir("r") + "/free-1").finals;
+  nlohmann::json damaged = nlohmann::json::parse(ReadFile(finals));
+  damaged["best_biped"] = {{"id", "0/0"}};
+  std::ofstream(finals) << damaged.dump();
+  const std::string error = Error([&] { Reproduction(Tiny(), Dir("r"), StartMode::kResume).Run(Threads(2)); });
+  EXPECT_NE(error.find(finals + ": "), std::string::npos) << error;
+  EXPECT_NE(error.find("best_biped."), std::string::npos) << error;
 }
 
 }  // namespace

@@ -360,7 +360,7 @@ TEST_F(RunTest, AForceStoppedBeforeItsFirstCheckpointIsRecovered) {
   // stopped after setting it aside, before the new run's first checkpoint
   fs::create_directory(Dir("a") + "/replaced");
   for (const std::string& name : RunFiles::Names()) {
-    fs::rename(Dir("a") + "/" + name, Dir("a") + "/replaced/" + name);
+    if (fs::exists(Dir("a") + "/" + name)) fs::rename(Dir("a") + "/" + name, Dir("a") + "/replaced/" + name);
   }
   EvolutionRun(SmallRun(ScaffoldCase::kFree, 1), Dir("fresh"), StartMode::kNew, Threads(2));
   fs::copy_file(Dir("fresh") + "/config.json", Dir("a") + "/config.json");
