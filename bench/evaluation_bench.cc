@@ -5,6 +5,7 @@
 //   evaluation_bench --benchmark_filter=Genome/authors   per genome of the authors' final archives
 //   evaluation_bench --benchmark_filter=Variant      the choices of docs/performance.md
 //   evaluation_bench --benchmark_filter=Generation   16 children on 2 threads
+//   evaluation_bench --benchmark_filter=Batch        bench/walkers_module_bench.py's 16 genomes on 2 threads
 #include <memory>
 
 #include <benchmark/benchmark.h>
@@ -63,6 +64,27 @@ void Generation(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * static_cast<long>(children.size()));
 }
 
+// The 16 genomes bench/walkers_module_bench.py evaluates from Python (the
+// benchmark set and the first 7 of the authors'), in its order, on 2 threads:
+// what evaluate_batch(rows, threads=2) does, without Python.
+void Batch(benchmark::State& st) {
+  std::vector<Genome> genomes;
+  for (const auto& [name, genome] : GenomeSet("bench")) genomes.push_back(genome);
+  const auto authors = GenomeSet("authors");
+  for (std::size_t i = 0; i < 7 && i < authors.size(); ++i) genomes.push_back(authors[i].second);
+  const std::unique_ptr<Evaluator> evaluator = MakeThreadEvaluator(2);  // its threads started once
+  const Preset preset = OriginalPreset();
+  const EvaluationSettings settings;
+  std::vector<EvaluationResult> results(genomes.size());
+  std::vector<EvaluationTask> tasks;
+  for (std::size_t i = 0; i < genomes.size(); ++i) tasks.push_back({&genomes[i], &preset, &settings, &results[i]});
+  for (auto _ : st) {
+    evaluator->EvaluateAll(tasks);
+    benchmark::DoNotOptimize(results);
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(genomes.size()));
+}
+
 const bool kRegistered = [] {
   for (const char* set : {"bench", "authors"}) {
     for (const auto& [name, genome] : GenomeSet(set)) {
@@ -76,6 +98,10 @@ const bool kRegistered = [] {
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
   }
+  benchmark::RegisterBenchmark("Batch/16_genomes_2_threads", Batch)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Iterations(1);
   benchmark::RegisterBenchmark("Generation/16_children_2_threads", Generation)
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();

@@ -8,7 +8,10 @@ data/genomes/authors/ (docs/python.md, "Speed").
 Each way evaluates the 16 once a round; the table gives the median round. The
 evaluations' own time is the sum of the wall_ms that walkers.evaluate reports
 (the time inside the C++ evaluation); over N threads, that sum divided by N is
-the least any batch of them can take, the bound a batch is compared with.
+the least any batch of them can take, the bound a batch is compared with. The
+same batch in C++ (evaluation_bench's Batch/16_genomes_2_threads, one iteration
+a round, its own timing) is timed in the same rounds, and the script ends with
+evaluate_batch's time over the C++ batch's, round by round.
 """
 import argparse
 import json
@@ -30,6 +33,15 @@ def genome_files():
     return bench + authors
 
 
+def cpp_batch(program):
+    """One run of evaluation_bench's Batch/16_genomes_2_threads: its wall time [s]."""
+    out = subprocess.run([program, "--benchmark_filter=^Batch/", "--benchmark_format=json"], check=True,
+                         capture_output=True, text=True).stdout
+    (run,) = json.loads(out)["benchmarks"]
+    assert run["time_unit"] == "ms", run["time_unit"]
+    return run["real_time"] / 1000
+
+
 def timed(work):
     start = time.perf_counter()
     out = work()
@@ -40,6 +52,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--program", default=str(SOURCE_DIR / "build/app/walkers"), help="the walkers program")
+    parser.add_argument("--evaluation-bench", default=str(SOURCE_DIR / "build/bench/evaluation_bench"),
+                        help="the C++ benchmark whose Batch/16_genomes_2_threads is the same batch without Python")
     args = parser.parse_args()
     files = genome_files()
     rows = np.stack([walkers.genome_array(str(f)) for f in files])
@@ -52,12 +66,15 @@ def main():
         "walkers.evaluate, one by one": lambda: [walkers.evaluate(str(f)) for f in files],
         "walkers.evaluate_batch, 1 thread": lambda: walkers.evaluate_batch(rows, threads=1),
         "walkers.evaluate_batch, 2 threads": lambda: walkers.evaluate_batch(rows, threads=2),
+        "C++, the same batch on 2 threads (evaluation_bench)": lambda: cpp_batch(args.evaluation_bench),
     }
     seconds = {way: [] for way in ways}
     inside = []  # the evaluations' own time a round [s]
     for _ in range(args.rounds):
         for way, work in ways.items():
             t, out = timed(work)
+            if way.startswith("C++"):
+                t = out  # the benchmark's own timing, without the process's start
             seconds[way].append(t)
             if way == "walkers.evaluate, one by one":
                 inside.append(sum(r["wall_ms"] for r in out) / 1000)
@@ -69,6 +86,11 @@ def main():
         t = statistics.median(ts)
         threads = 2 if "2 threads" in way else 1
         print(f"| {way} | {t:.2f} | {n / t:.1f} | {t / (own / threads):.3f} |")
+    # the batch from Python against the same batch in C++, round by round (the same moment's machine)
+    ratios = [p / c for p, c in zip(seconds["walkers.evaluate_batch, 2 threads"],
+                                    seconds["C++, the same batch on 2 threads (evaluation_bench)"])]
+    print(f"evaluate_batch on 2 threads over the C++ batch: median {statistics.median(ratios):.3f} "
+          f"(rounds: {', '.join(f'{r:.3f}' for r in ratios)})")
 
 
 if __name__ == "__main__":
