@@ -127,6 +127,15 @@ cmp -s "$tmp/summary.first.json" "$tmp/rep/summary.json" || fail "summary.json c
 cmp -s "$tmp/summary.first.md" "$tmp/rep/summary.md" || fail "summary.md changed when redone"
 grep -q "inconclusive at n = 1" "$tmp/again.txt" || fail "reproduce did not print the verdicts"
 "$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/rep" >/dev/null 2>&1 && fail "overwrote a reproduction without --resume"
+# committed results: the finished runs staged without their evaluations.csv,
+# whose statistics `reproduce --resume` makes again, the same
+WALKERS=$walkers WALKERS_PYTHON=$python "$src/scripts/stage_results.sh" "$tmp/rep" 1 "$tmp/staged" --ensemble 3 \
+  >"$tmp/stage.txt" 2>&1 || { cat "$tmp/stage.txt"; fail "stage_results.sh"; }
+ls "$tmp"/staged/*/evaluations.csv >/dev/null 2>&1 && fail "the staged runs kept their evaluations.csv"
+cp "$tmp/staged/summary.json" "$tmp/staged.summary.json"
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ensemble 3 --out "$tmp/staged" --resume \
+  >"$tmp/staged.txt" 2>&1 || { cat "$tmp/staged.txt"; fail "reproduce --resume on staged results"; }
+cmp -s "$tmp/staged.summary.json" "$tmp/staged/summary.json" || fail "summary.json changed when remade from staged results"
 # a failing summary is reported, the figures are drawn all the same, the exit status is 1
 mkdir "$tmp/failing_stats"
 cat >"$tmp/failing_stats/__main__.py" <<PY

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Stages the finished runs of replicates 1..R of a reproduction as results to
+# commit (docs/results/): copies their run folders, remakes the reproduction's
+# files, statistics and figures over them (n = R runs a case), then leaves out
+# the per-evaluation data (each run's evaluations.csv; its finals.json keeps
+# what the statistics need), so that `walkers reproduce --resume` on the staged
+# folder remakes the same files.
+#
+#   scripts/stage_results.sh FROM R TO [reproduce options: --authors-checkout PATH ...]
+#
+# FROM is a reproduction's folder (the paper's experiment, runs/paper); every
+# run of replicates 1..R must have finished. In TO, the staged files and run
+# folders replace their namesakes; nothing else of TO is touched. WALKERS names
+# the program (build/app/walkers by default).
+set -euo pipefail
+from=${1:?the reproduction folder} replicates=${2:?how many replicates} to=${3:?the folder to stage into}
+shift 3
+walkers=${WALKERS:-build/app/walkers}
+
+staging=$(mktemp -d "${to%/}.staging.XXXXXX")
+trap 'rm -rf "$staging"' EXIT
+generations=
+for run in "$from"/*-[0-9]*/; do
+  run=${run%/}
+  replicate=${run##*-}
+  [ "$replicate" -le "$replicates" ] || continue
+  if [ ! -f "$run/best.json" ]; then
+    echo "stage_results: $run has not finished; stage whole runs only" >&2
+    exit 1
+  fi
+  g=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["generations"])' "$run/config.json")
+  if [ -n "$generations" ] && [ "$g" != "$generations" ]; then
+    echo "stage_results: $run has $g generations, another run $generations" >&2
+    exit 1
+  fi
+  generations=$g
+  mkdir "$staging/$(basename "$run")"
+  for f in config.json checkpoint.json generations.csv evaluations.csv archive.json best.json; do
+    cp -p "$run/$f" "$staging/$(basename "$run")/"
+  done
+done
+[ -n "$generations" ] || { echo "stage_results: no runs of replicates 1..$replicates in $from" >&2; exit 1; }
+# an earlier staging's re-scores are kept: ensembles already made are not made again
+[ -f "$to/rescores.json" ] && cp -p "$to/rescores.json" "$staging/"
+
+# every run has finished: --resume makes no generation, only the finals' re-scores,
+# reproduction.json, the statistics and the figures
+"$walkers" reproduce --replicates "$replicates" --generations "$generations" --resume --out "$staging" "$@"
+rm -f "$staging"/*/evaluations.csv "$staging"/*/walkers.lock "$staging"/walkers.lock
+# into TO, each staged file or run folder replacing its namesake; TO's other contents stay
+mkdir -p "$to"
+for item in "$staging"/*; do
+  rm -rf "${to:?}/$(basename "$item")"
+  mv "$item" "$to/"
+done
+echo "staged ${replicates} replicates a case of $from in $to"
