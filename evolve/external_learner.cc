@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "control/input_file.h"
 #include "evolve/genetic_algorithm.h"
 
 namespace walkers {
@@ -37,12 +38,17 @@ void ExternalLearner::Tell(const BreedingInputs& in, const std::vector<Individua
   Source(in).Tell(in, evaluated);
 }
 
+// checkpoint.json's "learner": {"state": the program's state}, an object even
+// when the program's state is null
 nlohmann::json ExternalLearner::State() const {
-  if (source_ == nullptr) return restored_;
-  return source_->State();
+  return {{"state", source_ == nullptr ? restored_ : source_->State()}};
 }
 
-void ExternalLearner::Restore(const nlohmann::json& state, int, const std::string&) { restored_ = state; }
+void ExternalLearner::Restore(const nlohmann::json& state, int, const std::string& source) {
+  const JsonFields f(state, source, "learner.");
+  f.RequireOnly({"state"});
+  restored_ = f.Get("state");
+}
 
 std::unique_ptr<Learner> MakeExternalLearner(const LearnerSpec& spec, const GeneticAlgorithmConfig& ga,
                                              std::uint64_t) {

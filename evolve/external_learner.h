@@ -46,8 +46,10 @@ class ExternalLearner : public Learner {
   void Tell(const BreedingInputs& in, const std::vector<Individual>& evaluated) override;
 
   bool KeepsState() const override { return true; }
+  // {"state": the source's state}
   nlohmann::json State() const override;
-  // keeps the state for the source to take (restored_state)
+  // keeps the state for the source to take (restored_state); throws
+  // InputError naming `source` when `state` is not State()'s form
   void Restore(const nlohmann::json& state, int completed_generations, const std::string& source) override;
   // the state a resumed run was checkpointed with; null for a fresh run
   const nlohmann::json& restored_state() const { return restored_; }

@@ -1,5 +1,6 @@
 #include "evolve/external_learner.h"
 
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -96,13 +97,34 @@ TEST_F(ExternalLearnerTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
   } catch (const Killed&) {
   }
   const nlohmann::json checkpoint = nlohmann::json::parse(ReadFile(RunFiles(Dir("killed")).checkpoint));
-  EXPECT_EQ(checkpoint.at("learner").at("told"), 3) << "the source's state is in the checkpoint";
+  EXPECT_EQ(checkpoint.at("learner").at("state").at("told"), 3) << "the source's state is in the checkpoint";
 
   MutantSource resumed_source;  // knows nothing until the run gives it its state
   auto resumed = Start(Dir("killed"), StartMode::kResume, 5, &resumed_source);
   EXPECT_EQ(resumed->completed_generations(), 3);
   resumed->Run();
   ExpectSameRun(Dir("whole"), Dir("killed"));
+}
+
+TEST_F(ExternalLearnerTest, ANullStateResumesAndADamagedOneIsRefusedNamingTheField) {
+  struct NoState : MutantSource {
+    nlohmann::json State() override { return nullptr; }
+  } source;
+  Start(Dir("a"), StartMode::kNew, 1, &source)->Run();
+  MutantSource resumed;
+  auto run = Start(Dir("a"), StartMode::kResume, 2, &resumed);
+  EXPECT_TRUE(dynamic_cast<const ExternalLearner&>(run->learner()).restored_state().is_null());
+  run.reset();
+  const std::string path = RunFiles(Dir("a")).checkpoint;
+  nlohmann::json checkpoint = nlohmann::json::parse(ReadFile(path));
+  checkpoint["learner"] = {{"stat", 1}};
+  std::ofstream(path) << checkpoint.dump();
+  try {
+    Start(Dir("a"), StartMode::kResume, 2, &resumed);
+    FAIL() << "resumed with a damaged learner state";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("learner.stat"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(ExternalLearnerTest, ARunWithoutItsOutsideProgramIsAClearError) {

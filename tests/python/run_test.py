@@ -133,6 +133,14 @@ def test_a_closed_run_resumes_with_the_state_it_checkpointed(tmp_path):
     assert [r["generation"] for r in rows(tmp_path / "run" / "generations.csv")] == ["0", "1", "2"]
 
 
+def test_a_run_checkpointed_with_no_state_resumes_with_none(tmp_path):
+    with walkers.Run(tmp_path / "run", generations=2, population=2, threads=1) as run:
+        run.evaluate(np.tile(walkers.gene_defaults, (2, 1)))
+        run.checkpoint(None)
+    with walkers.Run(tmp_path / "run", generations=2, population=2, threads=1, resume=True) as run:
+        assert run.state is None and run.completed_generations == 1
+
+
 def test_bad_calls_are_clear_errors(tmp_path):
     with pytest.raises(ValueError, match="unknown"):
         walkers.Run(tmp_path / "a", case="none")
