@@ -45,6 +45,11 @@ std::optional<Individual> FinalistFromJson(const JsonFields& f, const std::strin
   return finalist;
 }
 
+// a run kept with its finals.json but without its evaluations.csv
+bool FinalsOnly(const RunFiles& files) {
+  return !std::filesystem::exists(files.evaluations) && std::filesystem::exists(files.finals);
+}
+
 // DIR/finals.json of a run that finished config.generations
 RunFinals ReadFinalsFile(const RunFiles& files, const RunConfig& config, const Individual& final_best) {
   const json j = LoadJsonFile(files.finals);
@@ -66,17 +71,9 @@ void WriteRunFinals(const std::string& dir, const RunConfig& config, const RunFi
 
 bool KeptWithoutEvaluations(const std::string& dir, const RunConfig& config) {
   const RunFiles files(dir);
-  if (std::filesystem::exists(files.evaluations) || !std::filesystem::exists(files.finals)) return false;
+  if (!FinalsOnly(files)) return false;
   const RunConfig stored = RunConfigFromJson(LoadJsonFile(files.config), files.config);
-  json a = RunConfigToJson(stored), b = RunConfigToJson(config);
-  a["learner"] = stored.learner;
-  b["learner"] = config.learner;
-  a.erase("generations");  // a longer run asked for is refused below, by name
-  b.erase("generations");
-  if (a != b) {
-    throw std::runtime_error(files.config + ": this run's settings are not the reproduction's (" + a.dump() +
-                             " against " + b.dump() + ")");
-  }
+  RequireResumableAs(stored, config, files.config);  // a longer run asked for is refused below, by name
   const Checkpoint cp = ParseCheckpoint(ReadFile(files.checkpoint), stored, files.checkpoint);
   if (cp.completed_generations != config.generations) {
     throw std::runtime_error(files.dir + ": the run has " + std::to_string(cp.completed_generations) + " of " +
@@ -89,9 +86,7 @@ bool KeptWithoutEvaluations(const std::string& dir, const RunConfig& config) {
 RunFinals LoadRunFinals(const std::string& dir, const RunConfig& config) {
   const RunFiles files(dir);
   RunFinals finals{LoadArchive(files.archive, config).front(), std::nullopt, std::nullopt};
-  if (!std::filesystem::exists(files.evaluations) && std::filesystem::exists(files.finals)) {
-    return ReadFinalsFile(files, config, finals.final_best);
-  }
+  if (FinalsOnly(files)) return ReadFinalsFile(files, config, finals.final_best);
 
   CsvReader rows(ReadFile(files.evaluations), files.evaluations);
   const int generation = rows.Column("generation");

@@ -12,21 +12,6 @@ namespace walkers {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-namespace {
-
-void RequireSame(const json& stored, const json& requested, const std::string& source) {
-  for (const auto& item : requested.items()) {
-    if (item.key() == "generations") continue;  // a resumed run may be extended
-    if (!stored.contains(item.key()) || stored.at(item.key()) != item.value()) {
-      throw std::runtime_error(source + ": this run has " + item.key() + " = " +
-                               (stored.contains(item.key()) ? stored.at(item.key()).dump() : std::string("(none)")) +
-                               " but " + item.value().dump() + " was asked for; resume with the run's own settings");
-    }
-  }
-}
-
-}  // namespace
-
 EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, StartMode mode, Evaluator& evaluator,
                            std::unique_ptr<Learner> learner)
     : config_(config), files_(dir), evaluator_(&evaluator), archive_(config.ga.archive_size) {
@@ -66,13 +51,7 @@ void EvolutionRun::StartFresh() {
 void EvolutionRun::Resume() {
   // everything is read and checked before anything is written
   const RunConfig stored = RunConfigFromJson(LoadJsonFile(files_.config), files_.config);
-  // the learner compared too, the GA's included, which config.json leaves unnamed
-  const auto compared = [](const RunConfig& c) {
-    json j = RunConfigToJson(c);
-    j["learner"] = c.learner;
-    return j;
-  };
-  RequireSame(compared(stored), compared(config_), files_.config);
+  RequireResumableAs(stored, config_, files_.config);
   if (!fs::exists(files_.checkpoint)) {
     // killed before its first generation completed: start it again
     CheckNoResultsWithoutCheckpoint(files_, config_);

@@ -271,6 +271,24 @@ json RunConfigToJson(const RunConfig& c) {
   return out;
 }
 
+void RequireResumableAs(const RunConfig& stored, const RunConfig& requested, const std::string& source) {
+  // the learner compared too, the GA's included, which config.json leaves unnamed
+  const auto compared = [](const RunConfig& c) {
+    json j = RunConfigToJson(c);
+    j["learner"] = c.learner;
+    return j;
+  };
+  const json have = compared(stored), want = compared(requested);
+  for (const auto& item : want.items()) {
+    if (item.key() == "generations") continue;  // a resumed run may be extended
+    if (!have.contains(item.key()) || have.at(item.key()) != item.value()) {
+      throw std::runtime_error(source + ": this run has " + item.key() + " = " +
+                               (have.contains(item.key()) ? have.at(item.key()).dump() : std::string("(none)")) +
+                               " but " + item.value().dump() + " was asked for; resume with the run's own settings");
+    }
+  }
+}
+
 RunConfig RunConfigFromJson(const json& j, const std::string& source) {
   try {
     const json keys = RunConfigToJson(RunConfig{});

@@ -49,6 +49,10 @@ struct RunConfig {
 nlohmann::json RunConfigToJson(const RunConfig& config);
 // The evaluation settings as config.json's "evaluation" object records them.
 nlohmann::json EvaluationSettingsToJson(const EvaluationSettings& settings);
+// Throws std::runtime_error naming `source` and the first setting in which the
+// run `stored` (its config.json) differs from `requested`, its learner
+// included; the generations may differ (a resumed run may be extended).
+void RequireResumableAs(const RunConfig& stored, const RunConfig& requested, const std::string& source);
 // config.json's content: every field present, typed and in range, and no
 // other. Throws std::runtime_error whose message starts with `source`.
 RunConfig RunConfigFromJson(const nlohmann::json& json, const std::string& source);

@@ -118,7 +118,6 @@ std::shared_ptr<Evaluator> ThreadPool(int threads) {
   return pool;
 }
 
-
 int ThreadsOrEveryCore(std::optional<int> threads) {
   if (!threads) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   RequireInRange("threads", *threads, 1, kMaxThreads);
