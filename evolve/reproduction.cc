@@ -215,6 +215,9 @@ void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observe
           if (observer.on_generation) observer.on_generation(run, s);
           if (error) throw Stopped{};
         });
+        // its finals now, not when every run has finished: a finished run can
+        // be kept (committed) without its evaluations while the others go on
+        WriteRunFinals(run_dir, run.config, LoadRunFinals(run_dir, run.config));
       } catch (const Stopped&) {
         return;
       } catch (...) {

@@ -113,7 +113,9 @@ class Reproduction {
   ~Reproduction();
 
   // Runs (or resumes) every run, `runs_at_once` of them side by side, their
-  // evaluations on `evaluator`; then WriteReproductionData. The files do not
+  // evaluations on `evaluator`, each writing its finals.json (WriteRunFinals)
+  // as it finishes; then WriteReproductionData. A finished run kept without
+  // its evaluations (KeptWithoutEvaluations) counts as done. The files do not
   // depend on the evaluator or on runs_at_once. When a run fails, the others
   // stop after their generation under way and its error is thrown.
   void Run(Evaluator& evaluator, const ReproductionObserver& observer = {}, int runs_at_once = 1);

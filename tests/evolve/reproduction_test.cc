@@ -318,5 +318,56 @@ TEST_F(ReproductionTest, AResumeWithoutTheRunsEvaluationsRemakesTheSameStatistic
   EXPECT_NE(error.find("best_biped."), std::string::npos) << error;
 }
 
+// A run's finals.json is written as the run finishes, so that it can be
+// committed while the later runs go on; the end does not change it.
+TEST_F(ReproductionTest, EachRunWritesItsFinalsAsItFinishes) {
+  std::vector<std::string> finished;  // the runs before the one starting
+  std::map<std::string, std::string> finals_then;
+  ReproductionObserver observer;
+  observer.on_run_start = [&](const PlannedRun& run, int) {
+    for (const std::string& name : finished) {
+      const std::string path = RunFiles(Dir("r") + "/" + name).finals;
+      EXPECT_TRUE(fs::exists(path)) << path << " when " << run.name << " started";
+      if (fs::exists(path)) finals_then[name] = ReadFile(path);
+    }
+    finished.push_back(run.name);
+  };
+  Reproduction(Tiny(), Dir("r"), StartMode::kNew).Run(Threads(2), observer, 1);
+  EXPECT_EQ(finals_then.size(), 2u);
+  for (const auto& [name, text] : finals_then) {
+    EXPECT_EQ(ReadFile(RunFiles(Dir("r") + "/" + name).finals), text) << name;
+  }
+}
+
+// An experiment continues on another machine from its committed runs (kept
+// without their evaluations): the missing runs are made, the kept ones are
+// not touched, and the statistics are those of the reproduction made at once.
+TEST_F(ReproductionTest, ContinuesFromFinishedRunsKeptWithoutTheirEvaluations) {
+  ReproductionConfig c = Tiny();
+  c.replicates = 2;
+  Reproduction(c, Dir("at_once"), StartMode::kNew).Run(Threads(2));
+
+  Reproduction(Tiny(), Dir("first"), StartMode::kNew).Run(Threads(2));
+  fs::create_directory(Dir("continued"));
+  for (const PlannedRun& run : PlanRuns(Tiny())) {
+    const RunFiles from(Dir("first") + "/" + run.name), to(Dir("continued") + "/" + run.name);
+    fs::create_directory(to.dir);
+    for (const std::string RunFiles::*file : RunFiles::All()) {
+      if (file != &RunFiles::evaluations && fs::exists(from.*file)) fs::copy_file(from.*file, to.*file);
+    }
+  }
+  std::vector<std::string> started;
+  ReproductionObserver observer;
+  observer.on_run_start = [&](const PlannedRun& run, int completed) {
+    if (completed == 0) started.push_back(run.name);
+  };
+  Reproduction(c, Dir("continued"), StartMode::kResume).Run(Threads(2), observer);
+  std::sort(started.begin(), started.end());
+  EXPECT_EQ(started, (std::vector<std::string>{"free-2", "performance-2", "time-2"}));
+  EXPECT_FALSE(fs::exists(RunFiles(Dir("continued") + "/free-1").evaluations));
+  EXPECT_EQ(ReadFile(ReproductionFiles(Dir("continued")).manifest),
+            ReadFile(ReproductionFiles(Dir("at_once")).manifest));
+}
+
 }  // namespace
 }  // namespace walkers
