@@ -1,17 +1,23 @@
 #!/usr/bin/env bash
-# Stages the finished runs of replicates 1..R of a reproduction as results to
-# commit (docs/results/): copies their run folders, remakes the reproduction's
-# files, statistics and figures over them (n = R runs a case), then leaves out
-# the per-evaluation data (each run's evaluations.csv; its finals.json keeps
-# what the statistics need), so that `walkers reproduce --resume` on the staged
-# folder remakes the same files.
+# Stages the finished runs of a reproduction as results to commit
+# (docs/results/), leaving out the per-evaluation data (each run's
+# evaluations.csv; its finals.json keeps what the statistics need):
+#  - the runs of replicates 1..R, with the reproduction's files, statistics and
+#    figures remade over them (n = R runs a case), so that
+#    `walkers reproduce --replicates R --resume` on the staged folder remakes
+#    the same files;
+#  - every other finished run, kept as it is, so that it is not lost before
+#    its replicate is complete in every case: the experiment continues from the
+#    committed runs on another machine (docs/cli.md, "Continuing an experiment
+#    elsewhere").
 #
 #   scripts/stage_results.sh FROM R TO [reproduce options: --authors-checkout PATH ...]
 #
 # FROM is a reproduction's folder (the paper's experiment, runs/paper); every
-# run of replicates 1..R must have finished. In TO, the staged files and run
-# folders replace their namesakes; nothing else of TO is touched. WALKERS names
-# the program (build/app/walkers by default).
+# run of replicates 1..R must have finished (R = 0: no statistics, the finished
+# runs only). In TO, the staged files and run folders replace their namesakes;
+# nothing else of TO is touched. WALKERS names the program (build/app/walkers
+# by default).
 set -euo pipefail
 from=${1:?the reproduction folder} replicates=${2:?how many replicates} to=${3:?the folder to stage into}
 shift 3
@@ -20,10 +26,14 @@ walkers=${WALKERS:-build/app/walkers}
 staging=$(mktemp -d "${to%/}.staging.XXXXXX")
 trap 'rm -rf "$staging"' EXIT
 generations=
+kept=()  # finished runs beyond replicate R
 for run in "$from"/*-[0-9]*/; do
   run=${run%/}
   replicate=${run##*-}
-  [ "$replicate" -le "$replicates" ] || continue
+  if [ "$replicate" -gt "$replicates" ]; then
+    [ -f "$run/best.json" ] && kept+=("$run")
+    continue
+  fi
   if [ ! -f "$run/best.json" ]; then
     echo "stage_results: $run has not finished; stage whole runs only" >&2
     exit 1
@@ -39,13 +49,30 @@ for run in "$from"/*-[0-9]*/; do
     cp -p "$run/$f" "$staging/$(basename "$run")/"
   done
 done
-[ -n "$generations" ] || { echo "stage_results: no runs of replicates 1..$replicates in $from" >&2; exit 1; }
+if [ "$replicates" -gt 0 ] && [ -z "$generations" ]; then
+  echo "stage_results: no runs of replicates 1..$replicates in $from" >&2
+  exit 1
+fi
+for run in "${kept[@]}"; do
+  if [ ! -f "$run/finals.json" ]; then
+    echo "stage_results: $run has finished but has no finals.json; resume the reproduction to write it" >&2
+    exit 1
+  fi
+  mkdir "$staging/$(basename "$run")"
+  for f in config.json checkpoint.json generations.csv archive.json best.json finals.json; do
+    cp -p "$run/$f" "$staging/$(basename "$run")/"
+  done
+done
+[ "$replicates" -gt 0 ] || [ ${#kept[@]} -gt 0 ] || { echo "stage_results: no finished runs in $from" >&2; exit 1; }
+
 # an earlier staging's re-scores are kept: ensembles already made are not made again
 [ -f "$to/rescores.json" ] && cp -p "$to/rescores.json" "$staging/"
 
 # every run has finished: --resume makes no generation, only the finals' re-scores,
 # reproduction.json, the statistics and the figures
-"$walkers" reproduce --replicates "$replicates" --generations "$generations" --resume --out "$staging" "$@"
+if [ "$replicates" -gt 0 ]; then
+  "$walkers" reproduce --replicates "$replicates" --generations "$generations" --resume --out "$staging" "$@"
+fi
 rm -f "$staging"/*/evaluations.csv "$staging"/*/walkers.lock "$staging"/walkers.lock
 # into TO, each staged file or run folder replacing its namesake; TO's other contents stay
 mkdir -p "$to"
@@ -53,4 +80,4 @@ for item in "$staging"/*; do
   rm -rf "${to:?}/$(basename "$item")"
   mv "$item" "$to/"
 done
-echo "staged ${replicates} replicates a case of $from in $to"
+echo "staged ${replicates} replicates a case of $from in $to, and ${#kept[@]} finished runs beyond them"

@@ -136,6 +136,19 @@ cp "$tmp/staged/summary.json" "$tmp/staged.summary.json"
 WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ensemble 3 --out "$tmp/staged" --resume \
   >"$tmp/staged.txt" 2>&1 || { cat "$tmp/staged.txt"; fail "reproduce --resume on staged results"; }
 cmp -s "$tmp/staged.summary.json" "$tmp/staged/summary.json" || fail "summary.json changed when remade from staged results"
+# finished runs beyond the replicates staged (here all of them, R = 0) are kept
+# as they are; an experiment continues from them in a new folder
+WALKERS=$walkers "$src/scripts/stage_results.sh" "$tmp/rep" 0 "$tmp/kept" >"$tmp/kept.txt" 2>&1 ||
+  { cat "$tmp/kept.txt"; fail "stage_results.sh with R = 0"; }
+[ -e "$tmp/kept/summary.json" ] && fail "stage_results.sh with R = 0 made statistics"
+for run in free-1 time-1 performance-1; do
+  [ -s "$tmp/kept/$run/finals.json" ] || fail "the kept $run has no finals.json"
+  [ -e "$tmp/kept/$run/evaluations.csv" ] && fail "the kept $run kept its evaluations.csv"
+done
+WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ensemble 3 --out "$tmp/kept" --resume \
+  >"$tmp/continued.txt" 2>&1 || { cat "$tmp/continued.txt"; fail "reproduce --resume on kept runs"; }
+grep -q "done already" "$tmp/continued.txt" || fail "the kept runs were not found done"
+cmp -s "$tmp/staged.summary.json" "$tmp/kept/summary.json" || fail "the kept runs' statistics differ from the staged ones"
 # a failing summary is reported, the figures are drawn all the same, the exit status is 1
 mkdir "$tmp/failing_stats"
 cat >"$tmp/failing_stats/__main__.py" <<PY
