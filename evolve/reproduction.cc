@@ -261,9 +261,7 @@ void WriteReproductionData(const ReproductionConfig& config, const std::string& 
   std::vector<Genome> genomes;
   for (const PlannedRun& run : plan) {
     const std::string run_dir = (fs::path(dir) / run.name).string();
-    finals.push_back(LoadRunFinals(run_dir, run.config));
-    // kept beside the evaluations, for the statistics of a copy without them
-    if (fs::exists(RunFiles(run_dir).evaluations)) WriteRunFinals(run_dir, run.config, finals.back());
+    finals.push_back(LoadRunFinals(run_dir, run.config));  // its finals.json was written as it finished
     for (const std::optional<Individual>& f : {std::optional<Individual>(finals.back().final_best),
                                                finals.back().best_biped, finals.back().best_tripod}) {
       if (f) genomes.push_back(f->genome);

@@ -25,6 +25,13 @@ walkers=${WALKERS:-build/app/walkers}
 
 staging=$(mktemp -d "${to%/}.staging.XXXXXX")
 trap 'rm -rf "$staging"' EXIT
+# copy_run RUN FILE...: the run's folder in the staging area, with those files
+copy_run() {
+  local run=$1
+  shift
+  mkdir "$staging/$(basename "$run")"
+  for f in "$@"; do cp -p "$run/$f" "$staging/$(basename "$run")/"; done
+}
 generations=
 kept=()  # finished runs beyond replicate R
 for run in "$from"/*-[0-9]*/; do
@@ -44,10 +51,7 @@ for run in "$from"/*-[0-9]*/; do
     exit 1
   fi
   generations=$g
-  mkdir "$staging/$(basename "$run")"
-  for f in config.json checkpoint.json generations.csv evaluations.csv archive.json best.json; do
-    cp -p "$run/$f" "$staging/$(basename "$run")/"
-  done
+  copy_run "$run" config.json checkpoint.json generations.csv evaluations.csv archive.json best.json
 done
 if [ "$replicates" -gt 0 ] && [ -z "$generations" ]; then
   echo "stage_results: no runs of replicates 1..$replicates in $from" >&2
@@ -58,10 +62,7 @@ for run in "${kept[@]}"; do
     echo "stage_results: $run has finished but has no finals.json; resume the reproduction to write it" >&2
     exit 1
   fi
-  mkdir "$staging/$(basename "$run")"
-  for f in config.json checkpoint.json generations.csv archive.json best.json finals.json; do
-    cp -p "$run/$f" "$staging/$(basename "$run")/"
-  done
+  copy_run "$run" config.json checkpoint.json generations.csv archive.json best.json finals.json
 done
 [ "$replicates" -gt 0 ] || [ ${#kept[@]} -gt 0 ] || { echo "stage_results: no finished runs in $from" >&2; exit 1; }
 
