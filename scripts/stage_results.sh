@@ -51,7 +51,14 @@ for run in "$from"/*-[0-9]*/; do
     exit 1
   fi
   generations=$g
-  copy_run "$run" config.json checkpoint.json generations.csv evaluations.csv archive.json best.json
+  # a run continued from committed results has its finals.json but no evaluations.csv
+  files=(config.json checkpoint.json generations.csv archive.json best.json)
+  for f in evaluations.csv finals.json; do [ -f "$run/$f" ] && files+=("$f"); done
+  if [ ! -f "$run/evaluations.csv" ] && [ ! -f "$run/finals.json" ]; then
+    echo "stage_results: $run has neither evaluations.csv nor finals.json; its finals cannot be read" >&2
+    exit 1
+  fi
+  copy_run "$run" "${files[@]}"
 done
 if [ "$replicates" -gt 0 ] && [ -z "$generations" ]; then
   echo "stage_results: no runs of replicates 1..$replicates in $from" >&2

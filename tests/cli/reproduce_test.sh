@@ -149,6 +149,10 @@ WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ens
   >"$tmp/continued.txt" 2>&1 || { cat "$tmp/continued.txt"; fail "reproduce --resume on kept runs"; }
 grep -q "done already" "$tmp/continued.txt" || fail "the kept runs were not found done"
 cmp -s "$tmp/staged.summary.json" "$tmp/kept/summary.json" || fail "the kept runs' statistics differ from the staged ones"
+# runs continued from committed results (finals.json, no evaluations.csv) are staged again, the same
+WALKERS=$walkers WALKERS_PYTHON=$python "$src/scripts/stage_results.sh" "$tmp/kept" 1 "$tmp/restaged" --ensemble 3 \
+  >"$tmp/restage.txt" 2>&1 || { cat "$tmp/restage.txt"; fail "stage_results.sh on runs continued from committed results"; }
+cmp -s "$tmp/staged.summary.json" "$tmp/restaged/summary.json" || fail "the restaged runs' statistics differ from the staged ones"
 # a failing summary is reported, the figures are drawn all the same, the exit status is 1
 mkdir "$tmp/failing_stats"
 cat >"$tmp/failing_stats/__main__.py" <<PY
