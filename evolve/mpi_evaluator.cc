@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -19,15 +21,23 @@ namespace walkers::mpi {
 namespace {
 
 // the messages between rank 0 and the others
-enum Tag : int { kTask = 1, kResult = 2, kStop = 3 };
+enum Tag : int { kTask = 1, kResult = 2, kStop = 3, kStopped = 4 };
 
 // how long a rank waits between looks for a message: far below an evaluation
 constexpr auto kPollInterval = std::chrono::microseconds(500);
 
 Session* g_session = nullptr;
 std::atomic<bool> g_rank_failed{false};
+// --rank-timeout of the command's evaluator; also bounds the wait for a
+// rank's answer to stop
+std::atomic<double> g_rank_timeout_s{300.0};
 // rank 0 calls MPI from several threads (MPI_THREAD_SERIALIZED): one at a time
 std::mutex g_mpi;
+// sends to a rank that did not take them in time: MPI may still read them
+// until the job is aborted (guarded by g_mpi)
+std::vector<std::unique_ptr<std::string>> g_abandoned_sends;
+
+using Clock = std::chrono::steady_clock;
 
 // Bytes of plain values and strings, written and read in the same order.
 class Packer {
@@ -94,8 +104,60 @@ std::vector<char> Receive(const MPI_Status& status) {
   return bytes;
 }
 
+// the other ranks' sends to rank 0, which is always polling for them
 void Send(const std::string& bytes, int rank, Tag tag) {
   MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, rank, tag, MPI_COMM_WORLD);
+}
+
+std::string NotAnsweredMessage(int rank, double timeout_s) {
+  return "MPI rank " + std::to_string(rank) + " has not answered for " + std::to_string(static_cast<long>(timeout_s)) +
+         " s (--rank-timeout): it has hung or its node is lost";
+}
+
+Clock::time_point After(double seconds) {
+  return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+// Rank 0: sends `bytes` to `rank` and returns whether it took them by
+// `deadline`. A task is too large for MPI's eager protocol, so a blocking
+// send to a stopped rank would never return, holding g_mpi; the send is
+// started, then polled.
+bool SendBefore(std::string bytes, int rank, Tag tag, Clock::time_point deadline) {
+  auto buffer = std::make_unique<std::string>(std::move(bytes));
+  MPI_Request request;
+  {
+    std::lock_guard<std::mutex> lock(g_mpi);
+    MPI_Isend(buffer->data(), static_cast<int>(buffer->size()), MPI_BYTE, rank, tag, MPI_COMM_WORLD, &request);
+  }
+  for (;;) {
+    {
+      std::lock_guard<std::mutex> lock(g_mpi);
+      int done = 0;
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+      if (done) return true;
+      if (Clock::now() > deadline) {
+        g_abandoned_sends.push_back(std::move(buffer));
+        return false;
+      }
+    }
+    std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
+// Rank 0: waits until `deadline` for a message from `rank` with `tag` and
+// returns its bytes, or nothing if none came in time.
+std::optional<std::vector<char>> AwaitMessage(int rank, Tag tag, Clock::time_point deadline) {
+  for (;;) {
+    {
+      std::lock_guard<std::mutex> lock(g_mpi);
+      int arrived = 0;
+      MPI_Status status;
+      MPI_Iprobe(rank, tag, MPI_COMM_WORLD, &arrived, &status);
+      if (arrived) return Receive(status);
+    }
+    if (Clock::now() > deadline) return {};
+    std::this_thread::sleep_for(kPollInterval);
+  }
 }
 
 // Rank 0's slot for `rank`: sends it the task and waits for its answer.
@@ -103,34 +165,17 @@ void EvaluateOnRank(int rank, double timeout_s, const EvaluationTask& task) {
   if (g_rank_failed) throw std::runtime_error("MPI: the job is ending after a rank failed");
   Packer out;
   out(task.preset->name), out(*task.settings), out(*task.genome);
-  {
-    std::lock_guard<std::mutex> lock(g_mpi);
-    Send(out.bytes(), rank, kTask);
+  const Clock::time_point deadline = After(timeout_s);
+  std::optional<std::vector<char>> bytes;
+  if (SendBefore(out.bytes(), rank, kTask, deadline)) bytes = AwaitMessage(rank, kResult, deadline);
+  if (!bytes) {
+    g_rank_failed = true;
+    throw std::runtime_error(NotAnsweredMessage(rank, timeout_s) +
+                             "; the job ends. Resume it with --resume: the last complete generation of every run "
+                             "is on disk");
   }
-  const auto sent = std::chrono::steady_clock::now();
-  for (;;) {
-    {
-      std::lock_guard<std::mutex> lock(g_mpi);
-      int arrived = 0;
-      MPI_Status status;
-      MPI_Iprobe(rank, kResult, MPI_COMM_WORLD, &arrived, &status);
-      if (arrived) {
-        const std::vector<char> bytes = Receive(status);
-        Unpacker in(bytes);
-        ResultFields(in, *task.result);
-        return;
-      }
-    }
-    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
-    if (waited > timeout_s) {
-      g_rank_failed = true;
-      throw std::runtime_error("MPI rank " + std::to_string(rank) + " has not answered for " +
-                               std::to_string(static_cast<long>(timeout_s)) +
-                               " s (--rank-timeout): it has hung or its node is lost; the job ends. Resume it with "
-                               "--resume: the last complete generation of every run is on disk");
-    }
-    std::this_thread::sleep_for(kPollInterval);
-  }
+  Unpacker in(*bytes);
+  ResultFields(in, *task.result);
 }
 
 }  // namespace
@@ -162,7 +207,19 @@ int Session::Finish(int status) {
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, status == 0 ? 1 : status);  // a hung rank would never take a stop
   }
-  for (int r = 1; r < size_; ++r) Send("", r, kStop);
+  // Every rank answers the stop before MPI_Finalize, which waits for all of
+  // them: one that hung after its last evaluation would otherwise hold the
+  // job forever.
+  const double timeout_s = g_rank_timeout_s;
+  const Clock::time_point deadline = After(timeout_s);
+  for (int r = 1; r < size_; ++r) {
+    if (!SendBefore("", r, kStop, deadline) || !AwaitMessage(r, kStopped, deadline)) {
+      std::fprintf(stderr, "walkers: error: %s when told to stop%s; the job is aborted\n",
+                   NotAnsweredMessage(r, timeout_s).c_str(), status == 0 ? " (the work is done, every file complete)" : "");
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, status == 0 ? 1 : status);
+    }
+  }
   return status;
 }
 
@@ -184,7 +241,10 @@ void ServeEvaluations() {
       continue;
     }
     const std::vector<char> bytes = Receive(status);
-    if (status.MPI_TAG == kStop) return;
+    if (status.MPI_TAG == kStop) {
+      Send("", 0, kStopped);
+      return;
+    }
     std::string preset_name;
     EvaluationSettings settings;
     Genome genome;
@@ -198,6 +258,7 @@ void ServeEvaluations() {
 }
 
 std::unique_ptr<Evaluator> MakeMpiEvaluator(int threads, double rank_timeout_s) {
+  g_rank_timeout_s = rank_timeout_s;
   std::vector<SlotEvaluator::Slot> slots;
   for (int t = 0; t < threads; ++t) {
     slots.push_back([](const EvaluationTask& task) {

@@ -18,9 +18,10 @@ namespace walkers::mpi {
 bool LaunchedByLauncher();
 
 // MPI from MPI_Init_thread to MPI_Finalize, for main. Rank 0 calls
-// Finish(status) when its command is done: the other ranks are told to stop,
-// or, after a rank failed (RankFailed), the job is aborted so that no rank
-// is left waiting.
+// Finish(status) when its command is done: the other ranks are told to stop
+// and each answers before MPI_Finalize (which waits for every rank). After a
+// rank failed (RankFailed), or if one does not answer the stop within
+// --rank-timeout, the job is aborted so that no rank is left waiting.
 class Session {
  public:
   Session(int* argc, char*** argv);
@@ -30,8 +31,8 @@ class Session {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
-  // Rank 0: the other ranks stop (or the job is aborted with `status` if a
-  // rank failed). Returns `status`.
+  // Rank 0: the other ranks stop (or the job is aborted with `status`, 1 if
+  // it is 0, if a rank failed or does not answer). Returns `status`.
   int Finish(int status);
 
  private:
