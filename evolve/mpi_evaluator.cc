@@ -118,6 +118,20 @@ Clock::time_point After(double seconds) {
   return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
 }
 
+// Rank 0: calls `ready` under g_mpi every kPollInterval until it says yes
+// (true) or `deadline` passes (false).
+template <typename Ready>
+bool PollUntil(Clock::time_point deadline, Ready ready) {
+  for (;;) {
+    {
+      std::lock_guard<std::mutex> lock(g_mpi);
+      if (ready()) return true;
+    }
+    if (Clock::now() > deadline) return false;
+    std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
 // Rank 0: sends `bytes` to `rank` and returns whether it took them by
 // `deadline`. A task is too large for MPI's eager protocol, so a blocking
 // send to a stopped rank would never return, holding g_mpi; the send is
@@ -129,35 +143,30 @@ bool SendBefore(std::string bytes, int rank, Tag tag, Clock::time_point deadline
     std::lock_guard<std::mutex> lock(g_mpi);
     MPI_Isend(buffer->data(), static_cast<int>(buffer->size()), MPI_BYTE, rank, tag, MPI_COMM_WORLD, &request);
   }
-  for (;;) {
-    {
-      std::lock_guard<std::mutex> lock(g_mpi);
-      int done = 0;
-      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-      if (done) return true;
-      if (Clock::now() > deadline) {
-        g_abandoned_sends.push_back(std::move(buffer));
-        return false;
-      }
-    }
-    std::this_thread::sleep_for(kPollInterval);
+  const bool taken = PollUntil(deadline, [&] {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    return done != 0;
+  });
+  if (!taken) {
+    std::lock_guard<std::mutex> lock(g_mpi);
+    g_abandoned_sends.push_back(std::move(buffer));
   }
+  return taken;
 }
 
 // Rank 0: waits until `deadline` for a message from `rank` with `tag` and
 // returns its bytes, or nothing if none came in time.
 std::optional<std::vector<char>> AwaitMessage(int rank, Tag tag, Clock::time_point deadline) {
-  for (;;) {
-    {
-      std::lock_guard<std::mutex> lock(g_mpi);
-      int arrived = 0;
-      MPI_Status status;
-      MPI_Iprobe(rank, tag, MPI_COMM_WORLD, &arrived, &status);
-      if (arrived) return Receive(status);
-    }
-    if (Clock::now() > deadline) return {};
-    std::this_thread::sleep_for(kPollInterval);
-  }
+  std::optional<std::vector<char>> bytes;
+  PollUntil(deadline, [&] {
+    int arrived = 0;
+    MPI_Status status;
+    MPI_Iprobe(rank, tag, MPI_COMM_WORLD, &arrived, &status);
+    if (arrived) bytes = Receive(status);
+    return arrived != 0;
+  });
+  return bytes;
 }
 
 // Rank 0's slot for `rank`: sends it the task and waits for its answer.
