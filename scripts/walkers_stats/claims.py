@@ -15,6 +15,8 @@ Verdict rule, per claim (ALPHA = 0.05, intervals at 95 %):
                    beyond no effect, for a claim of direction only;
   inconclusive at n = N   otherwise (N: runs per case).
 """
+from collections import namedtuple
+
 import numpy as np
 
 from . import paper as the_paper
@@ -109,19 +111,36 @@ def time_to_biped(run, for_good, never):
     return float(never if g is None else g)
 
 
-def missing(claim, text, needed, runs):
+# A claim of the paper: its id in summary.json, what it says and the paper's own figure
+# or words for it ("in 83 %").
+Claim = namedtuple("Claim", "id statement paper_says")
+
+
+def claim_text(claim):
+    """'statement — paper: what the paper says', a finding's `claim`."""
+    return f"{claim.statement} — paper: {claim.paper_says}"
+
+
+def undecided(claim, why):
+    """The finding of a claim that these runs cannot test at all."""
+    v = "inconclusive at n = 0"
+    return {"id": claim.id, "claim": claim_text(claim), "statement": claim.statement,
+            "paper_says": claim.paper_says, "we_find": "—", "verdict": v,
+            "line": f"{claim_text(claim)}: **{v}**: {why}."}
+
+
+def missing(claim, needed, runs):
     """The finding of a claim that lacks runs of a case it compares."""
     absent = [c for c in needed if not of_case(runs, c)]
     if not absent:
         return None
-    line = f"{text}: **inconclusive at n = 0**: no runs of case {', '.join(absent)}."
-    return {"id": claim, "claim": text, "verdict": "inconclusive at n = 0", "line": line}
+    return undecided(claim, f"no runs of case {', '.join(absent)}")
 
 
-def compared_finals(claim, text, runs, case_x, case_y):
+def compared_finals(claim, runs, case_x, case_y):
     """(None, x, y): the re-scored finals of case_x's and case_y's runs; or (the finding
     of a claim that lacks runs of one of them, None, None)."""
-    gap = missing(claim, text, (case_y, case_x), runs)
+    gap = missing(claim, (case_y, case_x), runs)
     if gap:
         return gap, None, None
     return None, finals(of_case(runs, case_x)), finals(of_case(runs, case_y))
@@ -141,8 +160,9 @@ def two_sample_effect(name, statistic, x, y):
             "interval": bootstrap_interval((x, y), statistic)}
 
 
-def finding(claim, text, p, effect, direction, null, paper, n, line_numbers, extra=None):
-    """A claim's JSON entry, with its verdict and its line."""
+def finding(claim, we_find, p, effect, direction, null, paper, n, line_numbers, extra=None):
+    """A claim's JSON entry, with its verdict and its line. we_find: our counterpart of
+    the paper's figure, in as few words (the verdict table's cell)."""
     v = verdict(p, effect["interval"], direction, null, paper, n)
     effect = {**effect, "interval": json_interval(effect["interval"]), "null": null,
               "paper": paper, "paper_direction": "above" if direction > 0 else "below"}
@@ -150,8 +170,9 @@ def finding(claim, text, p, effect, direction, null, paper, n, line_numbers, ext
         low, high = effect["interval"]
         where = "below" if paper < low else "above" if paper > high else "within"
         line_numbers += f"; the paper's value lies {where} our interval"
-    out = {"id": claim, "claim": text, "verdict": v, "effect": effect,
-           "line": f"{text}: **{v}**: {line_numbers}."}
+    out = {"id": claim.id, "claim": claim_text(claim), "statement": claim.statement,
+           "paper_says": claim.paper_says, "we_find": we_find, "verdict": v, "effect": effect,
+           "line": f"{claim_text(claim)}: **{v}**: {line_numbers}."}
     out.update(extra or {})
     return out
 
@@ -159,8 +180,9 @@ def finding(claim, text, p, effect, direction, null, paper, n, line_numbers, ext
 def claim_case3_above_case1(rep):
     """Case 3 ends above case 1 (final best fitness)."""
     c1, _, c3 = rep["cases"]
-    text = f"Case 3 ({c3}) ends above case 1 ({c1}) — paper: case 3 ends highest"
-    gap, x, y = compared_finals("case3_above_case1", text, rep["runs"], c3, c1)
+    claim = Claim("case3_above_case1", f"Case 3 ({c3}) ends above case 1 ({c1})",
+                  "case 3 ends highest")
+    gap, x, y = compared_finals(claim, rep["runs"], c3, c1)
     if gap:
         return gap
     u, p, test = mann_whitney(x, y, "greater", "case 3 > case 1")
@@ -172,7 +194,8 @@ def claim_case3_above_case1(rep):
                f"Hodges–Lehmann shift {shift['value']:+.2f} "
                f"{fmt_interval(shift['interval'], '{:+.2f}')}; "
                f"one-sided Mann–Whitney U = {u:g}, p = {fmt_p(p)}")
-    return finding("case3_above_case1", text, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
+    return finding(claim, f"{np.mean(x):.2f} against {np.mean(y):.2f}", p, delta, +1, 0.0, None,
+                   n_label(len(x), len(y)),
                    numbers, {"test": test, "n": [len(x), len(y)],
                              "hodges_lehmann": {"value": shift["value"],
                                                 "interval": json_interval(shift["interval"])}})
@@ -180,11 +203,11 @@ def claim_case3_above_case1(rep):
 
 def claim_case3_leads_generations(rep):
     """Case 3's mean best leads case 1's in most generations (the paper: 83 %)."""
-    text = "Case 3's mean best leads case 1's in most generations — paper: in {:.0f} %".format(
-        100 * rep["paper"]["share"])
+    claim = Claim("case3_leads_generations", "Case 3's mean best leads case 1's in most generations",
+                  f"in {100 * rep['paper']['share']:.0f} %")
     c1, _, c3 = rep["cases"]
     runs = rep["runs"]
-    gap = missing("case3_leads_generations", text, (c1, c3), runs)
+    gap = missing(claim, (c1, c3), runs)
     if gap:
         return gap
     a = [r["best_fitness"] for r in of_case(runs, c3)]
@@ -201,7 +224,7 @@ def claim_case3_leads_generations(rep):
                     "generations, case 3 - case 1, one-sided", "statistic": area, "p": p,
             "exact": exact}
     effect = {"name": "share of generations", "value": share, "interval": interval}
-    return finding("case3_leads_generations", text, p, effect, +1, 0.5, rep["paper"]["share"],
+    return finding(claim, f"in {100 * share:.1f} %", p, effect, +1, 0.5, rep["paper"]["share"],
                    n_label(len(a), len(b)), numbers,
                    {"test": test, "n": [len(a), len(b)], "generations": generations})
 
@@ -210,8 +233,9 @@ def claim_case2_below_case1(rep):
     """Case 2 ends below case 1 (the paper: at 66 % of it)."""
     paper = rep["paper"]["ratio"]
     c1, c2, _ = rep["cases"]
-    text = f"Case 2 ({c2}) ends below case 1 ({c1}) — paper: at {100 * paper:.0f} % of case 1"
-    gap, x, y = compared_finals("case2_below_case1", text, rep["runs"], c2, c1)
+    claim = Claim("case2_below_case1", f"Case 2 ({c2}) ends below case 1 ({c1})",
+                  f"at {100 * paper:.0f} % of case 1")
+    gap, x, y = compared_finals(claim, rep["runs"], c2, c1)
     if gap:
         return gap
     u, p, test = mann_whitney(x, y, "less", "case 2 < case 1")
@@ -221,8 +245,8 @@ def claim_case2_below_case1(rep):
                f"{fmt_interval(ratio['interval'], '{:.1f}', 100, ' %')}, Cliff's δ = "
                f"{float(cliffs_delta(x, y)):+.2f}; one-sided Mann–Whitney U = {u:g}, "
                f"p = {fmt_p(p)}")
-    return finding("case2_below_case1", text, p, ratio, -1, 1.0, paper, n_label(len(x), len(y)),
-                   numbers, {"test": test, "n": [len(x), len(y)],
+    return finding(claim, f"at {100 * ratio['value']:.1f} % of case 1", p, ratio, -1, 1.0, paper,
+                   n_label(len(x), len(y)), numbers, {"test": test, "n": [len(x), len(y)],
                              "cliffs_delta": float(cliffs_delta(x, y))})
 
 
@@ -231,14 +255,14 @@ def claim_case2_more_tripods(rep):
     paper = rep["paper"]["tripods"]
     c1, c2, c3 = rep["cases"]
     others = (c1, c3)
-    text = "Case 2 ends as a tripod more often than cases 1 and 3"
-    runs = rep["runs"]
-    gap = missing("case2_more_tripods", text, (c1, c2, c3), runs)
-    if gap:
-        return gap
     k2p, kop = paper[c2], sum(paper[c] for c in others)
     n2p, nop = the_paper.RUNS_PER_CASE, the_paper.RUNS_PER_CASE * len(others)
-    text += f" — paper: {k2p} of {n2p} against {kop} of {nop}"
+    claim = Claim("case2_more_tripods", "Case 2 ends as a tripod more often than cases 1 and 3",
+                  f"{k2p} of {n2p} against {kop} of {nop}")
+    runs = rep["runs"]
+    gap = missing(claim, (c1, c2, c3), runs)
+    if gap:
+        return gap
     time_runs = of_case(runs, c2)
     other_runs = [r for c in others for r in of_case(runs, c)]
     k2, n2 = tripod_finals(time_runs), len(time_runs)
@@ -255,7 +279,8 @@ def claim_case2_more_tripods(rep):
     test = {"name": "Fisher's exact, one-sided (case 2 > cases 1 and 3)", "p": p}
     shares = {"case2": {"tripods": k2, "runs": n2, "wilson": json_interval(w2)},
               "cases1and3": {"tripods": ko, "runs": no, "wilson": json_interval(wo)}}
-    return finding("case2_more_tripods", text, p, effect, +1, 0.0, k2p / n2p - kop / nop,
+    return finding(claim, f"{k2} of {n2} against {ko} of {no}", p, effect, +1, 0.0,
+                   k2p / n2p - kop / nop,
                    n_label(*(len(of_case(runs, c)) for c in (c1, c2, c3))), numbers,
                    {"test": test, "shares": shares})
 
@@ -263,15 +288,14 @@ def claim_case2_more_tripods(rep):
 def claim_biped_above_tripod(rep):
     """The best biped walks further than the best tripod (the paper: +37.5 %)."""
     paper = rep["paper"]["biped_over_tripod"] - 1.0
-    text = f"The best biped walks further than the best tripod — paper: {100 * paper:+.1f} %"
+    claim = Claim("biped_above_tripod", "The best biped walks further than the best tripod",
+                  f"{100 * paper:+.1f} %")
     runs = rep["runs"]
     bipeds = np.array([np.nan if r["best_biped"] is None else r["best_biped"] for r in runs])
     tripods = np.array([np.nan if r["best_tripod"] is None else r["best_tripod"] for r in runs])
     if np.all(np.isnan(bipeds)) or np.all(np.isnan(tripods)):
-        line = f"{text}: **inconclusive at n = 0**: no run evaluated a " + \
-            ("biped" if np.all(np.isnan(bipeds)) else "tripod") + " that did not fall."
-        return {"id": "biped_above_tripod", "claim": text, "verdict": "inconclusive at n = 0",
-                "line": line}
+        gait = "biped" if np.all(np.isnan(bipeds)) else "tripod"
+        return undecided(claim, f"no run evaluated a {gait} that did not fall")
 
     def excess(b, t, axis=-1):
         """best biped / best tripod - 1 over the (resampled) runs."""
@@ -293,7 +317,7 @@ def claim_biped_above_tripod(rep):
                f"p = {fmt_p(p)}")
     test = {"name": "sign test over runs, one-sided (a run's best biped > its best tripod)",
             "statistic": wins, "pairs": pairs, "p": p}
-    return finding("biped_above_tripod", text, p, effect, +1, 0.0, paper,
+    return finding(claim, f"{100 * value:+.1f} %", p, effect, +1, 0.0, paper,
                    n_label(*(len(of_case(runs, c)) for c in sorted({r["case"] for r in runs}))),
                    numbers, {"test": test})
 
@@ -301,11 +325,11 @@ def claim_biped_above_tripod(rep):
 def claim_case2_later_biped(rep):
     """Case 2's best becomes a biped for good later than case 1's (the paper: the
     time-constrained scaffold hinders bipedal evolution)."""
-    text = ("Case 2's best becomes a biped for good later than case 1's — paper: the "
-            "time-constrained scaffold hinders bipedal evolution")
+    claim = Claim("case2_later_biped", "Case 2's best becomes a biped for good later than case 1's",
+                  "the time-constrained scaffold hinders bipedal evolution")
     c1, c2, _ = rep["cases"]
     runs = rep["runs"]
-    gap = missing("case2_later_biped", text, (c1, c2), runs)
+    gap = missing(claim, (c1, c2), runs)
     if gap:
         return gap
     never = never_generation(runs)
@@ -314,12 +338,12 @@ def claim_case2_later_biped(rep):
     u, p, test = mann_whitney(x, y, "greater", "case 2 later than case 1")
     delta = two_sample_effect("Cliff's delta of the generation of a biped for good, case 2 vs "
                               "case 1", cliffs_delta, x, y)
-    numbers = (f"median generation {fmt_generation(median_time(x), never)} against "
-               f"{fmt_generation(median_time(y), never)} (never: {x.count(never)} and "
-               f"{y.count(never)}), Cliff's δ = {delta['value']:+.2f} "
-               f"{fmt_interval(delta['interval'], '{:+.2f}')}; one-sided Mann–Whitney "
-               f"U = {u:g}, p = {fmt_p(p)}")
-    return finding("case2_later_biped", text, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
+    medians = (f"median generation {fmt_generation(median_time(x), never)} against "
+               f"{fmt_generation(median_time(y), never)}")
+    numbers = (f"{medians} (never: {x.count(never)} and {y.count(never)}), Cliff's δ = "
+               f"{delta['value']:+.2f} {fmt_interval(delta['interval'], '{:+.2f}')}; one-sided "
+               f"Mann–Whitney U = {u:g}, p = {fmt_p(p)}")
+    return finding(claim, medians, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
                    numbers, {"test": test, "n": [len(x), len(y)]})
 
 
@@ -385,6 +409,17 @@ def evaluate(rep):
 
 # ----------------------------------------------------------------------------- output
 
+def verdict_table(findings):
+    """The claims at a glance: what the paper says, what we find, p and the verdict."""
+    lines = ["| the paper's claim | the paper | ours | one-sided p | verdict |",
+             "|---|---|---|---|---|"]
+    for f in findings:
+        p = f.get("test", {}).get("p")
+        lines.append(f"| {f['statement']} | {f['paper_says']} | {f['we_find']} | {fmt_p(p)} | "
+                     f"**{f['verdict']}** |")
+    return lines
+
+
 def markdown(block):
     """The '## Claims' section of summary.md."""
     lines = ["## Claims", "",
@@ -392,6 +427,7 @@ def markdown(block):
              ". Intervals are 95 % (bootstrap: percentile, "
              f"{block['bootstrap']['resamples']} resamples, seed {block['bootstrap']['seed']}; "
              "Wilson and Newcombe for proportions).", ""]
+    lines += verdict_table(block["findings"]) + [""]
     lines += [f"- {f['line']}" for f in block["findings"]]
     lines += ["", "| case | runs | final best, re-scored: mean [95 %] | final best is a tripod "
               "[Wilson 95 %] | paper | first biped best: median generation [95 %] "

@@ -130,6 +130,27 @@ class ClaimsOnRunsTest(unittest.TestCase):
         self.assertEqual(block["cases"]["time"]["biped_for_good_generation"]["never"], 3)
         self.assertEqual(block["cases"]["time"]["tripod_finals"]["tripods"], 3)
 
+    def test_the_verdict_table_sets_ours_beside_the_papers(self):
+        found, block = self.findings(PAPER_LIKE)
+        table = claims.verdict_table(block["findings"])
+        self.assertEqual(len(table), 2 + len(claims.CLAIMS))
+        self.assertIn("| Case 2 (time) ends below case 1 (free) | at 66 % of case 1 | "
+                      "at 65.1 % of case 1 |", "\n".join(table))
+        self.assertIn("| Case 2 ends as a tripod more often than cases 1 and 3 | 2 of 3 against "
+                      "0 of 6 | 3 of 4 against 0 of 8 | 0.018 | **reproduced** |", table)
+        self.assertIn("| +37.5 % | +92.0 % | 0.073 | **inconclusive at n = 4** |",
+                      table[2 + claims.CLAIMS.index(claims.claim_biped_above_tripod)])
+        self.assertIn("| the time-constrained scaffold hinders bipedal evolution | median "
+                      "generation never against 5 |",
+                      table[2 + claims.CLAIMS.index(claims.claim_case2_later_biped)])
+        # a claim these runs cannot test has no figure of ours and no p
+        found, block = self.findings({"free": PAPER_LIKE["free"],
+                                      "performance": PAPER_LIKE["performance"]})
+        row = claims.verdict_table(block["findings"])[
+            2 + claims.CLAIMS.index(claims.claim_case2_below_case1)]
+        self.assertTrue(row.endswith("| at 66 % of case 1 | — | — | **inconclusive at n = 0** |"), row)
+        self.assertIn(row, claims.markdown(block))
+
     def test_alike_cases_do_not_reproduce_the_paper(self):
         found, _ = self.findings(ALIKE)
         # δ = 0, but four replicates cannot rule out that case 3 is the better
