@@ -10,6 +10,9 @@ docs/fidelity.md.
 
   compare_authors.py extract --authors REPO --out DIR [--top 4]
       genome files of the top N of every run's final archive in REPO/CaseData
+  compare_authors.py finals --results DIR --out DIR
+      genome files of every run's best biped and best tripod in a reproduction's folder
+      (DIR/<run>/finals.json, as `walkers reproduce` writes it): our finals in their program
   compare_authors.py run --authors REPO --genomes DIR [--ensemble 25] [--jobs 2] [--json OUT] [--markdown OUT]
       build their program if needed, evaluate every genome in both, print the table
       (--authors-binary PROGRAM instead of --authors: their program, already built)
@@ -123,6 +126,43 @@ def extract(args):
     print(f"wrote {len(written)} genome files and origin.csv to {out}")
 
 
+# ---- genome files from our runs ----
+
+def finals(args):
+    results = pathlib.Path(args.results)
+    runs = sorted(f.parent for f in results.glob("*/finals.json"))
+    if not runs:
+        raise ToolError(f"{results}: no */finals.json (is --results a reproduction's folder?)")
+    out = pathlib.Path(args.out)
+    origins = ["file,case,run,gait,final_best,recorded_fitness"]
+    written = []
+    for run in runs:
+        try:
+            record = json.loads((run / "finals.json").read_text())
+            case = json.loads((run / "config.json").read_text())["case"]
+            best = json.loads((run / "best.json").read_text())
+        except (OSError, ValueError, KeyError) as e:
+            raise ToolError(f"{run}: unreadable run record ({e})") from None
+        for gait in ("biped", "tripod"):
+            final = record.get(f"best_{gait}")
+            if not final:
+                continue  # the run never had one
+            path = out / f"{run.name}-{gait}.json"
+            if path.exists() and not args.force:
+                raise ToolError(f"{path} exists (use --force to replace it)")
+            written.append((path, json.dumps(final["genome"], indent=2) + "\n"))
+            final_best = "yes" if final["genome"] == best else "no"
+            origins.append(f"{path.name},{case},{run.name},{gait},{final_best},{final['fitness']!r}")
+    origin = out / "origin.csv"
+    if origin.exists() and not args.force:
+        raise ToolError(f"{origin} exists (use --force to replace it)")
+    out.mkdir(parents=True, exist_ok=True)
+    for path, text in written:
+        path.write_text(text)
+    origin.write_text("\n".join(origins) + "\n")
+    print(f"wrote {len(written)} genome files and origin.csv to {out}")
+
+
 # ---- the authors' program ----
 
 # As the authors built it: no build type, so no optimisation and no NDEBUG.
@@ -227,16 +267,22 @@ def summarise(rows):
 
 
 def recorded_fitness(genome_dir):
-    """What the authors' evolver recorded for each genome, from the folder's origin.csv if any."""
+    """What a run recorded for each genome, from the folder's origin.csv if any: whose runs
+    ('their runs' for `extract`'s files, 'our runs' for `finals`') and the fitness by genome."""
     origin = pathlib.Path(genome_dir) / "origin.csv"
     if not origin.is_file():
-        return {}
+        return "their runs", {}
     with open(origin) as f:
-        return {r["file"][:-5]: float(r["authors_recorded_fitness"]) for r in csv.DictReader(f)}
+        rows = list(csv.DictReader(f))
+    for column, whose in (("authors_recorded_fitness", "their runs"), ("recorded_fitness", "our runs")):
+        if rows and column in rows[0]:
+            return whose, {r["file"][:-5]: float(r[column]) for r in rows}
+    return "their runs", {}
 
 
-def markdown_table(rows, recorded):
-    lines = ["| genome | recorded by their runs | theirs | ours: median [min, max] | ours / theirs | gait (ours) |",
+def markdown_table(rows, recorded_by):
+    whose, recorded = recorded_by
+    lines = [f"| genome | recorded by {whose} | theirs | ours: median [min, max] | ours / theirs | gait (ours) |",
              "|---|---|---|---|---|---|"]
     notes = {"timeout": f"> {AUTHORS_TIMEOUT_S:.0f} s", "exit 255": "fails (−1)"}
     for r in rows:
@@ -325,6 +371,10 @@ def main():
     e.add_argument("--out", required=True)
     e.add_argument("--top", type=int, default=4, help="the N fittest of each run's final archive")
     e.add_argument("--force", action="store_true")
+    f = sub.add_parser("finals", help="genome files of our runs' best bipeds and tripods")
+    f.add_argument("--results", required=True, help="a reproduction's folder (docs/results, runs/paper)")
+    f.add_argument("--out", required=True)
+    f.add_argument("--force", action="store_true")
     r = sub.add_parser("run", help="evaluate a folder of genomes in both programs")
     r.add_argument("--authors", help="a checkout of their repository (their program is built from it)")
     r.add_argument("--authors-binary", help="their program, already built (instead of --authors)")
@@ -339,7 +389,7 @@ def main():
     r.add_argument("--force", action="store_true")
     args = parser.parse_args()
     try:
-        {"extract": extract, "run": run}[args.command](args)
+        {"extract": extract, "finals": finals, "run": run}[args.command](args)
     except ToolError as err:
         print(f"compare_authors: {err}", file=sys.stderr)
         sys.exit(2)

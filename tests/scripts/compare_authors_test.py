@@ -121,6 +121,53 @@ class CompareAuthorsTest(unittest.TestCase):
         self.assertIn("| `archive_case2_05_28_16_31_22_1` | 14.90 | 14.00 | 12.60 [11.60, 13.60] | 0.90 | biped |", lines)
         self.assertIn("| `archive_case2_05_28_16_31_22_2` | 14.20 | -1.00 |", lines[4])
 
+    def write_run(self, name, case, biped, tripod, best):
+        """A finished run's folder as `walkers reproduce` leaves it: its finals (a best biped and
+        a best tripod, each a (fitness, kx) or None) and its final best, one of them."""
+        run = self.root / "results" / name
+        run.mkdir(parents=True)
+        finals = {"generations": 4000}
+        genomes = {}
+        for gait, final in (("biped", biped), ("tripod", tripod)):
+            if final is not None:
+                genomes[gait] = dict(compare_authors.genome_from_authors(GENES, "test"), kx=final[1])
+                finals[f"best_{gait}"] = {"fitness": final[0], "gait": gait, "genome": genomes[gait]}
+        (run / "finals.json").write_text(json.dumps(finals))
+        (run / "config.json").write_text(json.dumps({"case": case, "seed": 1}))
+        (run / "best.json").write_text(json.dumps(genomes[best]))
+
+    def test_finals_writes_each_runs_best_biped_and_best_tripod_as_genome_files(self):
+        self.write_run("free-1", "free", (12.5, 1300.0), (15.25, 1600.0), "tripod")
+        self.write_run("performance-1", "performance", (20.5, 2100.0), None, "biped")
+        out = self.root / "finals"
+        p = self.run_tool("finals", "--results", str(self.root / "results"), "--out", str(out))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(sorted(x.name for x in out.glob("*.json")),
+                         ["free-1-biped.json", "free-1-tripod.json", "performance-1-biped.json"])
+        self.assertEqual(json.loads((out / "free-1-tripod.json").read_text())["kx"], 1600.0)
+        self.assertEqual((out / "origin.csv").read_text().splitlines(), [
+            "file,case,run,gait,final_best,recorded_fitness",
+            "free-1-biped.json,free,free-1,biped,no,12.5",
+            "free-1-tripod.json,free,free-1,tripod,yes,15.25",
+            "performance-1-biped.json,performance,performance-1,biped,yes,20.5"])
+        # both programs on them, beside what our runs recorded
+        authors = executable(self.root / "walker", FAKE_AUTHORS)
+        walkers = executable(self.root / "walkers", FAKE_WALKERS)
+        table = self.root / "table.md"
+        p = self.run_tool("run", "--authors-binary", str(authors), "--walkers", str(walkers), "--genomes", str(out),
+                          "--ensemble", "3", "--jobs", "1", "--markdown", str(table))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        lines = table.read_text().splitlines()
+        self.assertTrue(lines[0].startswith("| genome | recorded by our runs | theirs |"), lines[0])
+        self.assertIn("| `free-1-tripod` | 15.25 | 16.00 | 14.40 [13.40, 15.40] | 0.90 | biped |", lines)
+        # nothing is replaced without --force, and a folder without runs is refused
+        again = self.run_tool("finals", "--results", str(self.root / "results"), "--out", str(out))
+        self.assertEqual(again.returncode, 2)
+        self.assertIn("exists", again.stderr)
+        empty = self.run_tool("finals", "--results", str(self.root / "repo"), "--out", str(self.root / "none"))
+        self.assertEqual(empty.returncode, 2)
+        self.assertIn("no */finals.json", empty.stderr)
+
     def test_their_genes_go_to_their_program_as_their_evolver_gave_them(self):
         genome = {ours: float(GENES[theirs]) for ours, theirs in compare_authors.AUTHORS_ARGUMENTS}
         genome["kx"] = 1572.4184169068672
