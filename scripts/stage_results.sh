@@ -8,8 +8,8 @@
 #    the same files;
 #  - every other finished run, kept as it is, so that it is not lost before
 #    its replicate is complete in every case: the experiment continues from the
-#    committed runs on another machine (docs/cli.md, "Continuing an experiment
-#    elsewhere").
+#    committed runs on another machine (docs/cli.md, `reproduce`: the run
+#    folders copied into a new folder and resumed there).
 #
 #   scripts/stage_results.sh FROM R TO [reproduce options: --authors-checkout PATH ...]
 #
