@@ -98,32 +98,35 @@ def genome_from_authors(genes, source):
         raise ToolError(f"{source}: gene {e} missing") from None
 
 
+def write_genome_folder(out, genomes, origins, force):
+    """Genome files [(file name, genome), ...] and their origin.csv (its lines, the header
+    first) into the folder out; nothing is written when any of them exists, unless force."""
+    out = pathlib.Path(out)
+    for path in [out / name for name, _ in genomes] + [out / "origin.csv"]:
+        if path.exists() and not force:
+            raise ToolError(f"{path} exists (use --force to replace it)")
+    out.mkdir(parents=True, exist_ok=True)
+    for name, genome in genomes:
+        (out / name).write_text(json.dumps(genome, indent=2) + "\n")
+    (out / "origin.csv").write_text("\n".join(origins) + "\n")
+    print(f"wrote {len(genomes)} genome files and origin.csv to {out}")
+
+
 def extract(args):
     case_data = pathlib.Path(args.authors) / "CaseData"
     summaries = sorted(case_data.glob("case*/summarisedOutput-*"))
     if not summaries:
         raise ToolError(f"{case_data}: no case*/summarisedOutput-* files (is --authors their repository?)")
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     origins = ["file,case,run,rank,authors_recorded_fitness"]
-    written = []
+    genomes = []
     for summary in summaries:
         case = summary.parent.name
         run = summary.name.split("-", 1)[1]
         for rank, (genes, fitness) in enumerate(final_archive(summary)[: args.top]):
-            genome = genome_from_authors(genes, f"{summary} entry {rank}")
-            path = out / f"archive_{case}_{run}_{rank}.json"
-            if path.exists() and not args.force:
-                raise ToolError(f"{path} exists (use --force to replace it)")
-            written.append((path, json.dumps(genome, indent=2) + "\n"))
-            origins.append(f"{path.name},{CASES.get(case, case)},{run},{rank},{fitness!r}")
-    origin = out / "origin.csv"
-    if origin.exists() and not args.force:
-        raise ToolError(f"{origin} exists (use --force to replace it)")
-    for path, text in written:
-        path.write_text(text)
-    origin.write_text("\n".join(origins) + "\n")
-    print(f"wrote {len(written)} genome files and origin.csv to {out}")
+            name = f"archive_{case}_{run}_{rank}.json"
+            genomes.append((name, genome_from_authors(genes, f"{summary} entry {rank}")))
+            origins.append(f"{name},{CASES.get(case, case)},{run},{rank},{fitness!r}")
+    write_genome_folder(args.out, genomes, origins, args.force)
 
 
 # ---- genome files from our runs ----
@@ -133,9 +136,8 @@ def finals(args):
     runs = sorted(f.parent for f in results.glob("*/finals.json"))
     if not runs:
         raise ToolError(f"{results}: no */finals.json (is --results a reproduction's folder?)")
-    out = pathlib.Path(args.out)
     origins = ["file,case,run,gait,final_best,recorded_fitness"]
-    written = []
+    genomes = []
     for run in runs:
         try:
             record = json.loads((run / "finals.json").read_text())
@@ -147,20 +149,11 @@ def finals(args):
             final = record.get(f"best_{gait}")
             if not final:
                 continue  # the run never had one
-            path = out / f"{run.name}-{gait}.json"
-            if path.exists() and not args.force:
-                raise ToolError(f"{path} exists (use --force to replace it)")
-            written.append((path, json.dumps(final["genome"], indent=2) + "\n"))
+            name = f"{run.name}-{gait}.json"
+            genomes.append((name, final["genome"]))
             final_best = "yes" if final["genome"] == best else "no"
-            origins.append(f"{path.name},{case},{run.name},{gait},{final_best},{final['fitness']!r}")
-    origin = out / "origin.csv"
-    if origin.exists() and not args.force:
-        raise ToolError(f"{origin} exists (use --force to replace it)")
-    out.mkdir(parents=True, exist_ok=True)
-    for path, text in written:
-        path.write_text(text)
-    origin.write_text("\n".join(origins) + "\n")
-    print(f"wrote {len(written)} genome files and origin.csv to {out}")
+            origins.append(f"{name},{case},{run.name},{gait},{final_best},{final['fitness']!r}")
+    write_genome_folder(args.out, genomes, origins, args.force)
 
 
 # ---- the authors' program ----
