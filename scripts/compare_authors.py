@@ -80,6 +80,11 @@ class ToolError(Exception):
 
 # ---- genome files from the authors' run data ----
 
+def natural_key(path):
+    """free-2 before free-10: a name's digit runs compare as numbers."""
+    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", pathlib.Path(path).name)]
+
+
 def final_archive(summary_path):
     """The last 'all time fittest' archive their evolver wrote: [(genes, fitness), ...]."""
     text = pathlib.Path(summary_path).read_text()
@@ -133,7 +138,7 @@ def extract(args):
 
 def finals(args):
     results = pathlib.Path(args.results)
-    runs = sorted(f.parent for f in results.glob("*/finals.json"))
+    runs = sorted((f.parent for f in results.glob("*/finals.json")), key=natural_key)
     if not runs:
         raise ToolError(f"{results}: no */finals.json (is --results a reproduction's folder?)")
     origins = ["file,case,run,gait,final_best,recorded_fitness"]
@@ -259,14 +264,35 @@ def summarise(rows):
     }
 
 
+def summarise_final_bests(rows, origins):
+    """The summary over the runs' final bests alone (what the claims use), and by case the
+    mean fitness of those compared in both programs; None unless origin.csv is `finals`'."""
+    final = {o["file"][:-5]: o["case"] for o in origins if o.get("final_best") == "yes"}
+    if not final:
+        return None
+    finals = [r for r in rows if r["genome"] in final]
+    by_case = {}
+    for case in sorted(set(final.values()), key=lambda c: (list(CASES.values()) + [c]).index(c)):
+        both = [r for r in finals if final[r["genome"]] == case and r["authors"] is not None]
+        by_case[case] = {"compared": len(both),
+                         "theirs_mean": statistics.mean(r["authors"] for r in both) if both else None,
+                         "ours_mean": statistics.mean(r["ours_median"] for r in both) if both else None}
+    return dict(summarise(finals), by_case=by_case)
+
+
+def origin_rows(genome_dir):
+    """The rows of the folder's origin.csv (which run each genome file comes from), if any."""
+    origin = pathlib.Path(genome_dir) / "origin.csv"
+    if not origin.is_file():
+        return []
+    with open(origin) as f:
+        return list(csv.DictReader(f))
+
+
 def recorded_fitness(genome_dir):
     """What a run recorded for each genome, from the folder's origin.csv if any: whose runs
     ('their runs' for `extract`'s files, 'our runs' for `finals`') and the fitness by genome."""
-    origin = pathlib.Path(genome_dir) / "origin.csv"
-    if not origin.is_file():
-        return "their runs", {}
-    with open(origin) as f:
-        rows = list(csv.DictReader(f))
+    rows = origin_rows(genome_dir)
     for column, whose in (("authors_recorded_fitness", "their runs"), ("recorded_fitness", "our runs")):
         if rows and column in rows[0]:
             return whose, {r["file"][:-5]: float(r[column]) for r in rows}
@@ -296,7 +322,7 @@ def write_new(path, text, force):
 
 
 def run(args):
-    genomes = sorted(pathlib.Path(args.genomes).glob("*.json"))
+    genomes = sorted(pathlib.Path(args.genomes).glob("*.json"), key=natural_key)
     if not genomes:
         raise ToolError(f"{args.genomes}: no genome files (*.json)")
     walkers = pathlib.Path(args.walkers)
@@ -349,10 +375,17 @@ def run(args):
           f"{fmt(s['median_ratio'])}, median |ours - theirs| {fmt(s['median_abs_difference'])}, "
           f"{s['tripods']} classed tripods (ensemble majority); ours a median {fmt(s['median_speedup'])} times faster "
           f"per evaluation")
+    final = summarise_final_bests(rows, origin_rows(args.genomes))
+    if final:
+        print(f"the runs' final bests: {final['compared']} of {final['genomes']} compared: Spearman "
+              f"{fmt(final['spearman'])}, median ratio ours/theirs {fmt(final['median_ratio'])}; mean fitness of "
+              "those compared, theirs against ours: " + ", ".join(
+                  f"{case} {fmt(c['theirs_mean'])} against {fmt(c['ours_mean'])} ({c['compared']})"
+                  for case, c in final["by_case"].items()))
     if args.markdown:
         write_new(args.markdown, markdown_table(rows, recorded_fitness(args.genomes)), args.force)
     if args.json:
-        write_new(args.json, json.dumps({"summary": s, "rows": rows, "ensemble": args.ensemble,
+        write_new(args.json, json.dumps({"summary": s, "final_bests": final, "rows": rows, "ensemble": args.ensemble,
                                          "preset": args.preset}, indent=1) + "\n", args.force)
 
 

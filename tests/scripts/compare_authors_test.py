@@ -168,6 +168,34 @@ class CompareAuthorsTest(unittest.TestCase):
         self.assertEqual(empty.returncode, 2)
         self.assertIn("no */finals.json", empty.stderr)
 
+    def test_the_runs_final_bests_are_summarised_by_case_in_the_runs_order(self):
+        self.write_run("time-1", "time", (9.0, 900.0), (8.0, 800.0), "biped")
+        self.write_run("free-10", "free", (12.5, 1300.0), (15.25, 1600.0), "tripod")
+        self.write_run("free-2", "free", (11.0, 1100.0), None, "biped")
+        out = self.root / "finals"
+        self.assertEqual(self.run_tool("finals", "--results", str(self.root / "results"), "--out", str(out)).returncode, 0)
+        order = [line.split(",")[0] for line in (out / "origin.csv").read_text().splitlines()[1:]]
+        self.assertEqual(order, ["free-2-biped.json", "free-10-biped.json", "free-10-tripod.json",
+                                 "time-1-biped.json", "time-1-tripod.json"])
+        authors = executable(self.root / "walker", FAKE_AUTHORS)
+        walkers = executable(self.root / "walkers", FAKE_WALKERS)
+        report = self.root / "report.json"
+        p = self.run_tool("run", "--authors-binary", str(authors), "--walkers", str(walkers), "--genomes", str(out),
+                          "--ensemble", "3", "--jobs", "2", "--json", str(report))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        r = json.loads(report.read_text())
+        self.assertEqual([row["genome"] for row in r["rows"]], [name[:-5] for name in order])
+        # the final bests: free-2's biped, free-10's tripod and time-1's biped
+        final = r["final_bests"]
+        self.assertEqual((final["genomes"], final["compared"]), (3, 3))
+        self.assertAlmostEqual(final["median_ratio"], 0.9)
+        self.assertEqual(list(final["by_case"]), ["free", "time"])
+        self.assertAlmostEqual(final["by_case"]["free"]["theirs_mean"], (11.0 + 16.0) / 2)
+        self.assertAlmostEqual(final["by_case"]["free"]["ours_mean"], 0.9 * (11.0 + 16.0) / 2)
+        self.assertEqual(final["by_case"]["time"]["compared"], 1)
+        self.assertIn("the runs' final bests: 3 of 3 compared", p.stdout)
+        self.assertIn("free 13.500 against 12.150 (2)", p.stdout)
+
     def test_their_genes_go_to_their_program_as_their_evolver_gave_them(self):
         genome = {ours: float(GENES[theirs]) for ours, theirs in compare_authors.AUTHORS_ARGUMENTS}
         genome["kx"] = 1572.4184169068672
