@@ -272,7 +272,9 @@ def summarise_final_bests(rows, origins):
         return None
     finals = [r for r in rows if r["genome"] in final]
     by_case = {}
-    for case in sorted(set(final.values()), key=lambda c: (list(CASES.values()) + [c]).index(c)):
+    cases = [c for c in CASES.values() if c in final.values()]  # the paper's order of the cases
+    cases += sorted(set(final.values()) - set(cases))
+    for case in cases:
         both = [r for r in finals if final[r["genome"]] == case and r["authors"] is not None]
         by_case[case] = {"compared": len(both),
                          "theirs_mean": statistics.mean(r["authors"] for r in both) if both else None,
@@ -289,13 +291,12 @@ def origin_rows(genome_dir):
         return list(csv.DictReader(f))
 
 
-def recorded_fitness(genome_dir):
-    """What a run recorded for each genome, from the folder's origin.csv if any: whose runs
+def recorded_fitness(origins):
+    """What a run recorded for each genome, from the folder's origin.csv rows if any: whose runs
     ('their runs' for `extract`'s files, 'our runs' for `finals`') and the fitness by genome."""
-    rows = origin_rows(genome_dir)
     for column, whose in (("authors_recorded_fitness", "their runs"), ("recorded_fitness", "our runs")):
-        if rows and column in rows[0]:
-            return whose, {r["file"][:-5]: float(r[column]) for r in rows}
+        if origins and column in origins[0]:
+            return whose, {r["file"][:-5]: float(r[column]) for r in origins}
     return "their runs", {}
 
 
@@ -375,7 +376,8 @@ def run(args):
           f"{fmt(s['median_ratio'])}, median |ours - theirs| {fmt(s['median_abs_difference'])}, "
           f"{s['tripods']} classed tripods (ensemble majority); ours a median {fmt(s['median_speedup'])} times faster "
           f"per evaluation")
-    final = summarise_final_bests(rows, origin_rows(args.genomes))
+    origins = origin_rows(args.genomes)
+    final = summarise_final_bests(rows, origins)
     if final:
         print(f"the runs' final bests: {final['compared']} of {final['genomes']} compared: Spearman "
               f"{fmt(final['spearman'])}, median ratio ours/theirs {fmt(final['median_ratio'])}; mean fitness of "
@@ -383,7 +385,7 @@ def run(args):
                   f"{case} {fmt(c['theirs_mean'])} against {fmt(c['ours_mean'])} ({c['compared']})"
                   for case, c in final["by_case"].items()))
     if args.markdown:
-        write_new(args.markdown, markdown_table(rows, recorded_fitness(args.genomes)), args.force)
+        write_new(args.markdown, markdown_table(rows, recorded_fitness(origins)), args.force)
     if args.json:
         write_new(args.json, json.dumps({"summary": s, "final_bests": final, "rows": rows, "ensemble": args.ensemble,
                                          "preset": args.preset}, indent=1) + "\n", args.force)

@@ -77,6 +77,13 @@ class CompareAuthorsTest(unittest.TestCase):
     def run_tool(self, *args):
         return subprocess.run([sys.executable, str(TOOL), *args], capture_output=True, text=True)
 
+    def run_both(self, genomes, *args):
+        """`run` on a folder of genome files, with the fake programs and ensembles of 3."""
+        authors = executable(self.root / "walker", FAKE_AUTHORS)
+        walkers = executable(self.root / "walkers", FAKE_WALKERS)
+        return self.run_tool("run", "--authors-binary", str(authors), "--walkers", str(walkers),
+                             "--genomes", str(genomes), "--ensemble", "3", *args)
+
     def test_extract_writes_the_top_of_the_final_archive_as_genome_files(self):
         out = self.root / "genomes"
         p = self.run_tool("extract", "--authors", str(self.root / "repo"), "--out", str(out), "--top", "2")
@@ -99,11 +106,8 @@ class CompareAuthorsTest(unittest.TestCase):
     def test_run_compares_both_programs_genome_by_genome(self):
         out = self.root / "genomes"
         self.assertEqual(self.run_tool("extract", "--authors", str(self.root / "repo"), "--out", str(out)).returncode, 0)
-        authors = executable(self.root / "walker", FAKE_AUTHORS)
-        walkers = executable(self.root / "walkers", FAKE_WALKERS)
         report, table = self.root / "report.json", self.root / "table.md"
-        p = self.run_tool("run", "--authors-binary", str(authors), "--walkers", str(walkers), "--genomes", str(out),
-                          "--ensemble", "3", "--jobs", "2", "--json", str(report), "--markdown", str(table))
+        p = self.run_both(out, "--jobs", "2", "--json", str(report), "--markdown", str(table))
         self.assertEqual(p.returncode, 0, p.stderr)
         r = json.loads(report.read_text())
         rows = {row["genome"]: row for row in r["rows"]}
@@ -151,11 +155,8 @@ class CompareAuthorsTest(unittest.TestCase):
             "free-1-tripod.json,free,free-1,tripod,yes,15.25",
             "performance-1-biped.json,performance,performance-1,biped,yes,20.5"])
         # both programs on them, beside what our runs recorded
-        authors = executable(self.root / "walker", FAKE_AUTHORS)
-        walkers = executable(self.root / "walkers", FAKE_WALKERS)
         table = self.root / "table.md"
-        p = self.run_tool("run", "--authors-binary", str(authors), "--walkers", str(walkers), "--genomes", str(out),
-                          "--ensemble", "3", "--jobs", "1", "--markdown", str(table))
+        p = self.run_both(out, "--jobs", "1", "--markdown", str(table))
         self.assertEqual(p.returncode, 0, p.stderr)
         lines = table.read_text().splitlines()
         self.assertTrue(lines[0].startswith("| genome | recorded by our runs | theirs |"), lines[0])
@@ -177,11 +178,8 @@ class CompareAuthorsTest(unittest.TestCase):
         order = [line.split(",")[0] for line in (out / "origin.csv").read_text().splitlines()[1:]]
         self.assertEqual(order, ["free-2-biped.json", "free-10-biped.json", "free-10-tripod.json",
                                  "time-1-biped.json", "time-1-tripod.json"])
-        authors = executable(self.root / "walker", FAKE_AUTHORS)
-        walkers = executable(self.root / "walkers", FAKE_WALKERS)
         report = self.root / "report.json"
-        p = self.run_tool("run", "--authors-binary", str(authors), "--walkers", str(walkers), "--genomes", str(out),
-                          "--ensemble", "3", "--jobs", "2", "--json", str(report))
+        p = self.run_both(out, "--jobs", "2", "--json", str(report))
         self.assertEqual(p.returncode, 0, p.stderr)
         r = json.loads(report.read_text())
         self.assertEqual([row["genome"] for row in r["rows"]], [name[:-5] for name in order])
