@@ -15,7 +15,8 @@ docs/fidelity.md.
       (DIR/<run>/finals.json, as `walkers reproduce` writes it): our finals in their program
   compare_authors.py run --authors REPO --genomes DIR [--ensemble 25] [--jobs 2] [--json OUT] [--markdown OUT]
       build their program if needed, evaluate every genome in both, print the table
-      (--authors-binary PROGRAM instead of --authors: their program, already built)
+      (--authors-binary PROGRAM instead of --authors: their program, already built;
+      --timeout S: how long to wait for their fitness of one genome, 300 s by default)
 
 Their program reads its genes as 32-bit floats from the command line, as their evolver gave
 them (Python 2's str(), 12 significant digits); we pass them the same way.
@@ -67,7 +68,7 @@ AUTHORS_ARGUMENTS = [
 OURS_FROM_AUTHORS = {theirs: ours for ours, theirs in AUTHORS_ARGUMENTS}
 
 # Their evolver killed an evaluation after 25 s of wall time (fitness -124); we wait
-# for their fitness, whatever it takes on this machine.
+# for their fitness up to this long by default (`run --timeout`).
 AUTHORS_TIMEOUT_S = 300.0
 # Their program's fitness for a fall or a Simbody exception.
 AUTHORS_FALL = -1.0
@@ -208,17 +209,17 @@ def authors_arguments(genome):
     return ["%.12g" % genome[ours] for ours, _ in AUTHORS_ARGUMENTS]
 
 
-def run_authors(binary, genome):
+def run_authors(binary, genome, timeout_s):
     """Their fitness, or None with a reason, and the wall time their program took."""
     start = time.monotonic()
-    fitness, note = run_authors_once(binary, genome)
+    fitness, note = run_authors_once(binary, genome, timeout_s)
     return fitness, note, time.monotonic() - start
 
 
-def run_authors_once(binary, genome):
+def run_authors_once(binary, genome, timeout_s):
     try:
         p = subprocess.run([str(binary)] + authors_arguments(genome), capture_output=True, text=True,
-                           timeout=AUTHORS_TIMEOUT_S)
+                           timeout=timeout_s)
     except subprocess.TimeoutExpired:
         return None, "timeout"
     if p.returncode != 0:
@@ -300,11 +301,11 @@ def recorded_fitness(origins):
     return "their runs", {}
 
 
-def markdown_table(rows, recorded_by):
+def markdown_table(rows, recorded_by, timeout_s):
     whose, recorded = recorded_by
     lines = [f"| genome | recorded by {whose} | theirs | ours: median [min, max] | ours / theirs | gait (ours) |",
              "|---|---|---|---|---|---|"]
-    notes = {"timeout": f"> {AUTHORS_TIMEOUT_S:.0f} s", "exit 255": "fails (−1)"}
+    notes = {"timeout": f"> {timeout_s:g} s", "exit 255": "fails (−1)"}
     for r in rows:
         theirs = notes.get(r["authors_note"], "—" if r["authors"] is None else f"{r['authors']:.2f}")
         ratio = f"{r['ours_median'] / r['authors']:.2f}" if r["authors"] and r["authors"] > 0 else "—"
@@ -326,6 +327,8 @@ def run(args):
     genomes = sorted(pathlib.Path(args.genomes).glob("*.json"), key=natural_key)
     if not genomes:
         raise ToolError(f"{args.genomes}: no genome files (*.json)")
+    if not args.timeout > 0:
+        raise ToolError(f"--timeout {args.timeout}: must be a number of seconds above 0")
     walkers = pathlib.Path(args.walkers)
     if not walkers.is_file():
         raise ToolError(f"{walkers}: not found (build the project first: scripts/build.sh)")
@@ -340,7 +343,7 @@ def run(args):
 
     def one(path):
         genome = json.loads(path.read_text())
-        authors, note, seconds = run_authors(binary, genome)
+        authors, note, seconds = run_authors(binary, genome, args.timeout)
         ours = run_ours(walkers, path, args.ensemble, args.preset)
         e = ours["ensemble"]
         return {
@@ -385,7 +388,7 @@ def run(args):
                   f"{case} {fmt(c['theirs_mean'])} against {fmt(c['ours_mean'])} ({c['compared']})"
                   for case, c in final["by_case"].items()))
     if args.markdown:
-        write_new(args.markdown, markdown_table(rows, recorded_fitness(origins)), args.force)
+        write_new(args.markdown, markdown_table(rows, recorded_fitness(origins), args.timeout), args.force)
     if args.json:
         write_new(args.json, json.dumps({"summary": s, "final_bests": final, "rows": rows, "ensemble": args.ensemble,
                                          "preset": args.preset}, indent=1) + "\n", args.force)
@@ -412,6 +415,8 @@ def main():
     r.add_argument("--ensemble", type=int, default=25)
     r.add_argument("--preset", default="original")
     r.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    r.add_argument("--timeout", type=float, default=AUTHORS_TIMEOUT_S,
+                   help="seconds to wait for their program's fitness of one genome (default %(default)g)")
     r.add_argument("--json", help="write every row and the summary here")
     r.add_argument("--markdown", help="write the table here, as docs/fidelity.md shows it")
     r.add_argument("--force", action="store_true")

@@ -26,10 +26,11 @@ GENES = {
 }
 
 # Their program: prints a fitness that is kx / 100 (so the tests know it), or exits 254 (a
-# fall, return -2) when kx is 1234.
+# fall, return -2) when kx is 1234, or takes 30 s when kx is 999.
 FAKE_AUTHORS = """#!/bin/sh
 kx=$7
 if [ "$kx" = "1234" ]; then exit 254; fi
+if [ "$kx" = "999" ]; then sleep 30; fi
 awk -v kx="$kx" 'BEGIN { printf "%.4f", kx / 100 }'
 """
 
@@ -124,6 +125,26 @@ class CompareAuthorsTest(unittest.TestCase):
         lines = table.read_text().splitlines()
         self.assertIn("| `archive_case2_05_28_16_31_22_1` | 14.90 | 14.00 | 12.60 [11.60, 13.60] | 0.90 | biped |", lines)
         self.assertIn("| `archive_case2_05_28_16_31_22_2` | 14.20 | -1.00 |", lines[4])
+
+    def test_their_program_is_waited_for_as_long_as_timeout_says(self):
+        genomes = self.root / "genomes"
+        genomes.mkdir()
+        for kx in (1500.0, 999.0):
+            genome = dict(compare_authors.genome_from_authors(GENES, "test"), kx=kx)
+            (genomes / f"kx{kx:.0f}.json").write_text(json.dumps(genome))
+        report, table = self.root / "report.json", self.root / "table.md"
+        p = self.run_both(genomes, "--timeout", "0.5", "--json", str(report), "--markdown", str(table))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        rows = {row["genome"]: row for row in json.loads(report.read_text())["rows"]}
+        self.assertIsNone(rows["kx999"]["authors"])
+        self.assertEqual(rows["kx999"]["authors_note"], "timeout")
+        self.assertLess(rows["kx999"]["authors_ms"], 10000.0)
+        self.assertAlmostEqual(rows["kx1500"]["authors"], 15.0)
+        self.assertIn("| `kx999` | — | > 0.5 s |", table.read_text())
+        # a timeout that is not a positive number of seconds is refused before anything runs
+        bad = self.run_both(genomes, "--timeout", "0")
+        self.assertEqual(bad.returncode, 2)
+        self.assertIn("--timeout 0", bad.stderr)
 
     def write_run(self, name, case, biped, tripod, best):
         """A finished run's folder as `walkers reproduce` leaves it: its finals (a best biped and
