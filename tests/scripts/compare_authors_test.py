@@ -30,7 +30,7 @@ GENES = {
 FAKE_AUTHORS = """#!/bin/sh
 kx=$7
 if [ "$kx" = "1234" ]; then exit 254; fi
-if [ "$kx" = "999" ]; then sleep 30; fi
+if [ "$kx" = "999" ]; then exec sleep 30; fi
 awk -v kx="$kx" 'BEGIN { printf "%.4f", kx / 100 }'
 """
 
