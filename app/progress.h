@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "evolve/run.h"
+#include "evolve/run_config.h"
 
 namespace walkers::app {
 

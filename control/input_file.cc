@@ -80,6 +80,12 @@ json ParseJson(const std::string& text, const std::string& source) {
 
 json LoadJsonFile(const std::string& path) { return ParseJson(ReadFile(path), path); }
 
+std::vector<std::string> KeysOf(const json& object) {
+  std::vector<std::string> keys;
+  for (const auto& item : object.items()) keys.push_back(item.key());
+  return keys;
+}
+
 std::string NumberRange::ToString() const {
   return (open_below ? "(" : "[") + FormatExact(lo) + ", " + FormatExact(hi) + "]";
 }

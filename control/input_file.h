@@ -33,6 +33,10 @@ constexpr int kMaxJsonDepth = 16;
 nlohmann::json ParseJson(const std::string& text, const std::string& source);
 nlohmann::json LoadJsonFile(const std::string& path);
 
+// The keys of a JSON object, in its order: what JsonFields::RequireOnly allows
+// when a file's fields are those its writer writes.
+std::vector<std::string> KeysOf(const nlohmann::json& object);
+
 // A closed interval [lo, hi], or (lo, hi] when open_below.
 struct NumberRange {
   double lo = 0, hi = 0;

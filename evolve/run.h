@@ -1,6 +1,7 @@
 // One evolution run in a directory: the generation loop, and checkpoints that
-// let a run killed at any moment resume to the same result. Its files and
-// their formats are evolve/run_files.h's; what its evaluations run on is the
+// let a run killed at any moment resume to the same result. Its configuration
+// and the summary of a generation are evolve/run_config.h's; its files and
+// their formats evolve/run_files.h's; what its evaluations run on is the
 // Evaluator given (evolve/evaluator.h).
 //
 // DIR/walkers.lock      locked by the one process writing the run (evolve/files.h)
@@ -18,6 +19,7 @@
 #include "evolve/files.h"
 #include "evolve/learner.h"
 #include "evolve/results_folder.h"
+#include "evolve/run_config.h"
 #include "evolve/run_files.h"
 #include "evolve/scaffold.h"
 

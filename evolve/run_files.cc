@@ -84,8 +84,6 @@ json MembersToJson(const std::vector<Individual>& members) {
   return out;
 }
 
-// The learner of a run, in its files: named only when it is not the paper's GA.
-bool NamesLearner(const RunConfig& c) { return c.learner != DefaultLearner().name; }
 
 }  // namespace
 
@@ -100,13 +98,6 @@ json ArchiveFileJson(const RunConfig& c, int completed, double initial_fitness, 
 }
 
 namespace {
-
-// the keys of a JSON object
-std::vector<std::string> KeysOf(const json& object) {
-  std::vector<std::string> keys;
-  for (const auto& item : object.items()) keys.push_back(item.key());
-  return keys;
-}
 
 // The gaits files may name.
 constexpr Gait kGaits[] = {Gait::kBiped, Gait::kTripod, Gait::kNone};
@@ -143,37 +134,8 @@ Individual IndividualFromJson(const JsonFields& f, int generations, int populati
   return ind;
 }
 
-int IntField(const JsonFields& f, const std::string& key) {
-  return static_cast<int>(f.Integer(key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
-}
-
-// The evaluation settings config.json records, with their allowed ranges.
-struct EvaluationField {
-  const char* key;
-  NumberRange range;
-  double* (*of)(EvaluationSettings*);
-};
-const EvaluationField kEvaluationFields[] = {
-    {"duration", {0, 3600, true}, [](EvaluationSettings* e) { return &e->duration; }},
-    {"relative_tolerance", {0, 1, true}, [](EvaluationSettings* e) { return &e->integrator.relative_tolerance; }},
-    {"absolute_tolerance_position", {0, 1, true},
-     [](EvaluationSettings* e) { return &e->integrator.absolute_tolerance_position; }},
-    {"absolute_tolerance_velocity", {0, 1, true},
-     [](EvaluationSettings* e) { return &e->integrator.absolute_tolerance_velocity; }},
-    {"contact_stiffness", {0, 1e15, true}, [](EvaluationSettings* e) { return &e->contact.surface.stiffness; }},
-    {"contact_dissipation", {0, 1e6}, [](EvaluationSettings* e) { return &e->contact.surface.dissipation; }},
-    {"friction_transition_velocity", {0, 1e3, true},
-     [](EvaluationSettings* e) { return &e->contact.transition_velocity; }},
-    {"weld_depth", {0, 0.1}, [](EvaluationSettings* e) { return &e->weld.depth; }},
-    {"weld_stabilization", {0, 1e6, true}, [](EvaluationSettings* e) { return &e->weld.stabilization; }},
-};
-constexpr int kMaxBdfOrder = 5;  // CVODE's BDF, the method of every run
 // InitF of the performance scaffold: positive (kAuthorsInitialFitness)
 constexpr NumberRange kInitialFitnessRange{0, 1000, true};
-
-double Of(const EvaluationField& field, const EvaluationSettings& settings) {
-  return *field.of(const_cast<EvaluationSettings*>(&settings));
-}
 
 // The rows a checkpoint names: the first `bytes` bytes of a CSV file, whose
 // header must be `header`; calls row(reader, index) for each. Returns how many.
@@ -230,97 +192,6 @@ std::vector<Individual> ArchiveFromJson(const JsonFields& f, int completed, cons
 
 }  // namespace
 
-void RunConfig::Validate() const {
-  const LearnerSpec& spec = LearnerByName(learner);
-  RequireInRange("generations", generations, 1, kMaxGenerations);
-  if (seed > kMaxSeed) {
-    throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
-                                std::to_string(kMaxSeed) + "]");
-  }
-  ga.Validate();
-  if (ga.population < spec.min_population) {
-    throw std::invalid_argument("population = " + std::to_string(ga.population) + " is outside its allowed range [" +
-                                std::to_string(spec.min_population) + ", " + std::to_string(kMaxPopulation) +
-                                "] for the learner " + spec.name);
-  }
-  for (const EvaluationField& field : kEvaluationFields) {
-    RequireInRange(std::string("evaluation.") + field.key, Of(field, evaluation), field.range);
-  }
-  RequireInRange("evaluation.max_order", evaluation.integrator.max_order, 1, kMaxBdfOrder);
-}
-
-json EvaluationSettingsToJson(const EvaluationSettings& settings) {
-  json evaluation = {{"max_order", settings.integrator.max_order},
-                     {"restart_at_ticks", settings.integrator.restart_on_torque_change}};
-  for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, settings);
-  return evaluation;
-}
-
-json RunConfigToJson(const RunConfig& c) {
-  const json evaluation = EvaluationSettingsToJson(c.evaluation);
-  json out = {{"case", ScaffoldCaseName(c.scaffold_case)},
-              {"preset", c.preset.name},
-              {"generations", c.generations},
-              {"seed", c.seed},
-              {"population", c.ga.population},
-              {"archive_size", c.ga.archive_size},
-              {"mutation_children", c.ga.mutation_children},
-              {"mutation_probability", c.ga.mutation_probability},
-              {"evaluation", evaluation}};
-  if (NamesLearner(c)) out["learner"] = c.learner;
-  return out;
-}
-
-void RequireResumableAs(const RunConfig& stored, const RunConfig& requested, const std::string& source) {
-  // the learner compared too, the GA's included, which config.json leaves unnamed
-  const auto compared = [](const RunConfig& c) {
-    json j = RunConfigToJson(c);
-    j["learner"] = c.learner;
-    return j;
-  };
-  const json have = compared(stored), want = compared(requested);
-  for (const auto& item : want.items()) {
-    if (item.key() == "generations") continue;  // a resumed run may be extended
-    if (!have.contains(item.key()) || have.at(item.key()) != item.value()) {
-      throw std::runtime_error(source + ": this run has " + item.key() + " = " +
-                               (have.contains(item.key()) ? have.at(item.key()).dump() : std::string("(none)")) +
-                               " but " + item.value().dump() + " was asked for; resume with the run's own settings");
-    }
-  }
-}
-
-RunConfig RunConfigFromJson(const json& j, const std::string& source) {
-  try {
-    const json keys = RunConfigToJson(RunConfig{});
-    const JsonFields f(j, source);
-    std::vector<std::string> known = KeysOf(keys);
-    known.push_back("learner");  // absent: the paper's GA
-    f.RequireOnly(known);
-    RunConfig c;
-    c.scaffold_case = ScaffoldCaseByName(f.String("case"));
-    if (j.contains("learner")) c.learner = f.OneOf("learner", LearnerNames());
-    c.preset = PresetByName(f.String("preset"));
-    c.generations = IntField(f, "generations");
-    c.seed = f.Unsigned("seed", kMaxSeed);
-    c.ga.population = IntField(f, "population");
-    c.ga.archive_size = IntField(f, "archive_size");
-    c.ga.mutation_children = IntField(f, "mutation_children");
-    c.ga.mutation_probability = f.Number("mutation_probability");
-    const JsonFields e = f.Object("evaluation");
-    e.RequireOnly(KeysOf(keys.at("evaluation")));
-    for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
-    c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
-    c.evaluation.integrator.restart_on_torque_change = e.Bool("restart_at_ticks");
-    c.Validate();
-    return c;
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(source + ": " + e.what());
-  }
-}
-
-RunConfig ParseRunConfig(const std::string& text, const std::string& source) {
-  return RunConfigFromJson(ParseJson(text, source), source);
-}
 
 json CheckpointToJson(const Checkpoint& cp) {
   json out = {{"format", kCheckpointFormat},
