@@ -5,7 +5,8 @@
 #   setup.sh --test     and what the tests need: Chromium, to check the replay page;
 #                       clang and its libFuzzer runtime, for the loaders' fuzz targets;
 #                       Open MPI, for the runs shared over MPI ranks (docs/cluster.md);
-#                       pybind11, NumPy and pytest, for the Python module and its tests (docs/python.md)
+#                       pybind11, NumPy and pytest, for the Python module and its tests (docs/python.md);
+#                       valgrind, for the instruction guard (scripts/instruction_guard.py)
 #   setup.sh --authors  and what building the authors' program for scripts/compare_authors.py needs
 set -euo pipefail
 
@@ -16,7 +17,7 @@ packages=(
 )
 case "${1:-}" in
   --test) packages+=(chromium clang libclang-rt-14-dev libopenmpi-dev openmpi-bin
-                   pybind11-dev python3-numpy python3-pytest) ;;
+                   pybind11-dev python3-numpy python3-pytest valgrind) ;;
   --authors) packages+=(libsimbody-dev libarmadillo-dev) ;;
 esac
 
