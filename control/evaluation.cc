@@ -27,7 +27,7 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
                           const TickObserver& observer, const StepObserver& step_observer) {
   const auto wall_start = std::chrono::steady_clock::now();
   const Model model = BuildModel(BodyOf(genome), ModelOptions{}, settings.contact, settings.weld);
-  const State start = StartState(model);
+  const State start = StartState(model, settings.start_trunk_raise);
 
   WalkingController controller(genome, model, preset);
   Integrator integrator(model, settings.integrator);

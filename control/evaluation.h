@@ -32,6 +32,10 @@ struct EvaluationSettings {
   // authors' program does (ProjectOntoWelds), instead of letting the weld's
   // stabilisation pull the foot into place.
   bool project_on_plant = true;
+  // [m] the start pose's trunk raised by this before its projection onto the
+  // welds (StartState): how the accuracy criterion's ensembles perturb a walk
+  // (control/accuracy.h). Evaluations and runs leave it at 0.
+  double start_trunk_raise = 0.0;
 };
 
 struct EvaluationResult {

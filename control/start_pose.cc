@@ -12,10 +12,10 @@ Welds StartWelds(const Model& model) {
   return welds;
 }
 
-State StartState(const Model& model) {
+State StartState(const Model& model, double trunk_raise) {
   const BodyParameters& b = model.body;
   FreeBodyState s;
-  s.z(kTrunkX + 1) = model.leg_length() + b.half_foot_y + b.half_body_y;
+  s.z(kTrunkX + 1) = model.leg_length() + b.half_foot_y + b.half_body_y + trunk_raise;
   for (int leg = 0; leg < kNumLegs; ++leg) {
     s.z(FootCoord(leg) + 1) = b.half_foot_y;
     s.z(PinCoord(leg, kKnee)) = kStartKneeFlexion;

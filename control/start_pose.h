@@ -19,7 +19,9 @@ Welds StartWelds(const Model& model);
 // halfFootY + halfBodyY above the origin, feet flat at (0, halfFootY), knees
 // pi/10, hips and ankles 0, at rest) projected onto both foot welds at x = 0
 // and the hip welds as Simbody's project() does. The trunk is then not level
-// (docs/model.md). Throws std::runtime_error if the projection fails.
-State StartState(const Model& model);
+// (docs/model.md). `trunk_raise` [m] raises the default state's trunk before
+// the projection: the accuracy criterion's ensembles perturb the start by it
+// (control/accuracy.h). Throws std::runtime_error if the projection fails.
+State StartState(const Model& model, double trunk_raise = 0.0);
 
 }  // namespace walkers
