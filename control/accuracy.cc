@@ -33,27 +33,29 @@ double Quantile(std::vector<double> values, double p) {
   return values[below] + (position - static_cast<double>(below)) * (values[above] - values[below]);
 }
 
-AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEnsemble& tight) {
+AccuracyVerdict JudgeAccuracy(const FitnessEnsemble& production, const FitnessEnsemble& reference) {
   AccuracyVerdict v;
-  const double tight_median = tight.Median();
-  const double iqr = tight.UpperQuartile() - tight.LowerQuartile();
-  v.regular = iqr < 0.02 * std::max(1.0, std::abs(tight_median));
-  v.median_difference = RelativeFitnessDifference(production.Median(), tight_median);
-  v.fitness_agrees = v.regular ? v.median_difference < 0.01
-                               : production.Median() >= tight.LowerQuartile() &&
-                                     production.Median() <= tight.UpperQuartile();
-  const auto majority = [](int count, const FitnessEnsemble& e) { return 2 * count > static_cast<int>(e.fitness.size()); };
-  v.gait_agrees = majority(production.bipeds, production) == majority(tight.bipeds, tight) &&
-                  majority(production.tripods, production) == majority(tight.tripods, tight);
-  v.fall_agrees = majority(production.falls, production) == majority(tight.falls, tight);
+  const double reference_median = reference.Median();
+  const double iqr = reference.UpperQuartile() - reference.LowerQuartile();
+  v.regular = iqr < kRegularIqr * std::max(1.0, std::abs(reference_median));
+  v.median_difference = RelativeFitnessDifference(production.Median(), reference_median);
+  const bool inside =
+      production.Median() >= reference.LowerQuartile() && production.Median() <= reference.UpperQuartile();
+  v.fitness_agrees = v.regular && (v.median_difference < kRegularMedians || inside);
+  const auto majority = [](int count, const FitnessEnsemble& e) {
+    return 2 * count > static_cast<int>(e.fitness.size());
+  };
+  v.gait_agrees = majority(production.bipeds, production) == majority(reference.bipeds, reference) &&
+                  majority(production.tripods, production) == majority(reference.tripods, reference);
+  v.fall_agrees = majority(production.falls, production) == majority(reference.falls, reference);
   // a walk made or broken by the integration error
   const auto members = [](const FitnessEnsemble& e, auto&& in) {
     return static_cast<int>(std::count_if(e.fitness.begin(), e.fitness.end(), in));
   };
   const int production_stalled = members(production, [](double f) { return f <= kNonWalkerFitness; });
   const int production_walking = members(production, [](double f) { return f >= kWalkerFitness; });
-  v.lost_walker = tight_median >= kWalkerFitness && majority(production_stalled, production);
-  v.numerical_walker = tight_median <= kNonWalkerFitness && majority(production_walking, production);
+  v.lost_walker = reference_median >= kWalkerFitness && majority(production_stalled, production);
+  v.numerical_walker = reference_median <= kNonWalkerFitness && majority(production_walking, production);
   return v;
 }
 
@@ -71,10 +73,19 @@ double FitnessEnsemble::WorstDifferenceFrom(double reference) const {
   return worst;
 }
 
-EvaluationSettings EnsembleMemberSettings(const EvaluationSettings& settings, int size, int k) {
+EvaluationSettings EnsembleMemberSettings(const EvaluationSettings& settings, int size, int k,
+                                          const Perturbation& perturbation) {
   const double offset = k - 0.5 * (size - 1);  // half-integers for an even size
   EvaluationSettings member = settings;
-  if (offset != 0.0) member.integrator.relative_tolerance *= 1.0 + 1e-4 * offset;
+  if (offset == 0.0) return member;
+  switch (perturbation.kind) {
+    case PerturbationKind::kRelativeTolerance:
+      member.integrator.relative_tolerance *= 1.0 + perturbation.step * offset;
+      break;
+    case PerturbationKind::kStartPose:
+      member.start_trunk_raise += perturbation.step * offset;
+      break;
+  }
   return member;
 }
 
@@ -92,12 +103,13 @@ FitnessEnsemble EnsembleOf(const std::vector<EvaluationResult>& members) {
 }
 
 FitnessEnsemble EvaluateEnsemble(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
-                                 int size, const EvaluationResult* unperturbed) {
+                                 int size, const EvaluationResult* unperturbed, const Perturbation& perturbation) {
   std::vector<EvaluationResult> members;
   for (int k = 0; k < size; ++k) {
     const bool middle = 2 * k == size - 1;
-    members.push_back(middle && unperturbed ? *unperturbed
-                                            : Evaluate(genome, preset, EnsembleMemberSettings(settings, size, k)));
+    members.push_back(middle && unperturbed
+                          ? *unperturbed
+                          : Evaluate(genome, preset, EnsembleMemberSettings(settings, size, k, perturbation)));
   }
   return EnsembleOf(members);
 }

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The accuracy criterion (docs/performance.md, "Accuracy") at the production
-# settings, on a small subset of its wider set: a regular biped of the
-# authors' (benchmark set), a faller (benchmark set) and a walker of our free
-# run that stalls near fitness 1 (data/genomes/sampled/), ensembles of 25
-# against 100x tighter tolerances.
+# settings, on a small subset of its wider set judged as one set: a regular
+# biped of the authors' (benchmark set), a faller (benchmark set) and a walker
+# of our free run that stalls near fitness 1 (data/genomes/sampled/),
+# ensembles of 25 with the start perturbed (control/accuracy.h) against 100x
+# tighter tolerances.
 #   accuracy_subset_test.sh ACCURACY_PROGRAM SOURCE_DIR PYTHON
 set -euo pipefail
 accuracy=$1 source=$2 python=$3
