@@ -20,8 +20,8 @@
 #include "control/genome.h"
 #include "control/step_profile.h"
 #include "dynamics/observation.h"
-#include "evolve/files.h"
 #include "evolve/finals.h"  // kMaxEnsemble
+#include "files/durable_file.h"
 
 namespace walkers::app {
 namespace {

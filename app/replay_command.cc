@@ -9,7 +9,7 @@
 #include "app/replay.h"
 #include "control/genome.h"
 #include "control/walk_record.h"
-#include "evolve/files.h"
+#include "files/durable_file.h"
 
 namespace walkers::app {
 namespace {

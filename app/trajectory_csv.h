@@ -6,14 +6,14 @@
 
 #include "dynamics/coords.h"
 #include "dynamics/observation.h"
-#include "evolve/files.h"
+#include "files/durable_file.h"
 
 namespace walkers::app {
 
 class TrajectoryCsv {
  public:
   // with_controller adds the columns `state` and `x_target`. The rows go to a
-  // temporary file that Close() renames into place (evolve/files.h): a
+  // temporary file that Close() renames into place (files/durable_file.h): a
   // failed or interrupted command leaves an earlier file at `path` as it was.
   // Throws if the file cannot be written.
   TrajectoryCsv(const std::string& path, bool with_controller);

@@ -15,7 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "control/number_text.h"
+#include "files/number_text.h"
 #include "evolve/run.h"
 
 namespace walkers::app {

@@ -1,10 +1,9 @@
 #include "control/genome.h"
 
-#include <fstream>
-
 #include <nlohmann/json.hpp>
 
-#include "control/input_file.h"
+#include "files/durable_file.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace {
@@ -121,10 +120,7 @@ Genome LoadGenome(const std::string& path) {
 }
 
 void SaveGenome(const Genome& genome, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw GenomeError(path + ": cannot write genome file");
-  out << GenomeToJson(genome).dump(2) << "\n";
-  if (!out) throw GenomeError(path + ": writing the genome file failed");
+  WriteFileAtomically(path, GenomeToJson(genome).dump(2) + "\n");
 }
 
 }  // namespace walkers

@@ -77,9 +77,11 @@ nlohmann::json GenomeToJson(const Genome& genome);
 // Validates every key and value; `source` names the file in error messages.
 Genome GenomeFromJson(const nlohmann::json& json, const std::string& source);
 
-// Parses the file strictly (control/input_file.h: a key given twice is
+// Parses the file strictly (files/input_file.h: a key given twice is
 // refused), then as GenomeFromJson.
 Genome LoadGenome(const std::string& path);
+// Writes a genome file atomically (files/durable_file.h); throws
+// std::runtime_error naming the file on failure.
 void SaveGenome(const Genome& genome, const std::string& path);
 
 }  // namespace walkers

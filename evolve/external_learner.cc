@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "control/input_file.h"
+#include "files/input_file.h"
 #include "evolve/genetic_algorithm.h"
 
 namespace walkers {

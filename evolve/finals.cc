@@ -9,8 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "control/input_file.h"
-#include "evolve/files.h"
+#include "files/csv.h"
+#include "files/durable_file.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace {

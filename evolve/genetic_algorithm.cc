@@ -3,7 +3,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "control/input_file.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "control/input_file.h"
+#include "files/input_file.h"
 #include "evolve/external_learner.h"
 #include "evolve/genetic_algorithm.h"
 #include "evolve/pagmo_learners.h"

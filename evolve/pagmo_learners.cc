@@ -18,8 +18,8 @@
 #include <pagmo/problem.hpp>
 #include <pagmo/s11n.hpp>
 
-#include "control/input_file.h"
-#include "control/number_text.h"
+#include "files/input_file.h"
+#include "files/number_text.h"
 #include "evolve/genetic_algorithm.h"
 
 namespace walkers {

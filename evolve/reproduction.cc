@@ -11,8 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "control/walk_record.h"
-#include "evolve/files.h"
 #include "evolve/source_commit.h"
+#include "files/durable_file.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace fs = std::filesystem;
@@ -161,14 +162,10 @@ Reproduction::Reproduction(const ReproductionConfig& config, const std::string& 
     }
     return runs;
   };
-  StartedFolder started =
-      StartResultsFolder(dir, "reproduction", mode, RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint,
-                         contents, lock_runs);
-  lock_.emplace(std::move(started.lock));
-  replaced_ = std::move(started.replaced);
+  folder_.emplace(dir, "reproduction", mode, RunFiles((fs::path(dir) / plan_.front().name).string()).checkpoint,
+                  contents, lock_runs);
 }
 
-// replaced_ goes first, while the lock is still held
 Reproduction::~Reproduction() = default;
 
 void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observer, int runs_at_once) {
@@ -178,7 +175,7 @@ void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observe
   // run's children while a generation waits for its slowest. Every run is
   // deterministic on its own, so its files do not depend on how many run at
   // once. The observer is called by one thread at a time.
-  std::mutex mutex;  // the observer, replaced_, the first error
+  std::mutex mutex;  // the observer, folder_, the first error
   const std::vector<std::size_t> order = StartOrder(plan_);
   std::size_t next = 0;
   std::exception_ptr error;
@@ -208,10 +205,7 @@ void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observe
         }
         evolution.Run([&](const GenerationSummary& s) {
           std::lock_guard<std::mutex> lock(mutex);
-          if (replaced_) {
-            replaced_->Discard();  // the first new run has its first checkpoint
-            replaced_.reset();
-          }
+          folder_->DiscardReplaced();  // the first new run has its first checkpoint
           if (observer.on_generation) observer.on_generation(run, s);
           if (error) throw Stopped{};
         });

@@ -34,6 +34,7 @@
 #include "evolve/finals.h"
 #include "evolve/genetic_algorithm.h"
 #include "evolve/run.h"
+#include "files/results_folder.h"
 
 namespace walkers {
 
@@ -124,8 +125,7 @@ class Reproduction {
   ReproductionConfig config_;
   std::string dir_;
   std::vector<PlannedRun> plan_;
-  std::optional<FolderLock> lock_;
-  std::unique_ptr<SetAside> replaced_;  // under kForce, until the first checkpoint
+  std::optional<ResultsFolder> folder_;  // its lock; under kForce, the old one set aside
 };
 
 // After the runs: reads every finished run's finals in DIR, re-scores them on

@@ -6,7 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evolve/files.h"
+#include "files/durable_file.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace fs = std::filesystem;
@@ -23,13 +24,11 @@ EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, Star
                                 config.learner + ")");
   }
   learner_ = learner ? std::move(learner) : MakeLearner(config.learner, config.ga, config.seed);
-  StartedFolder started = StartResultsFolder(dir, "run", mode, files_.checkpoint, [&] {
+  folder_.emplace(dir, "run", mode, files_.checkpoint, [&] {
     FolderContents held{RunFiles::Names(), "", false};
     for (auto file : RunFiles::All()) held.any = held.any || fs::exists(files_.*file);
     return held;
   });
-  lock_.emplace(std::move(started.lock));
-  replaced_ = std::move(started.replaced);
   if (mode == StartMode::kResume) {
     if (!fs::exists(files_.config)) throw std::runtime_error(dir + ": no run to resume (config.json is missing)");
     Resume();
@@ -38,7 +37,6 @@ EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, Star
   }
 }
 
-// replaced_ goes first, while the lock is still held
 EvolutionRun::~EvolutionRun() = default;
 
 void EvolutionRun::StartFresh() {
@@ -129,10 +127,7 @@ void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_g
     const std::uint64_t generations_bytes = AppendDurably(files_.generations, GenerationRow(s));
     completed_ = g + 1;
     WriteCheckpoint(evaluations_bytes, generations_bytes);
-    if (replaced_) {
-      replaced_->Discard();  // the new run has its first checkpoint
-      replaced_.reset();
-    }
+    folder_->DiscardReplaced();  // the new run has its first checkpoint
     if (on_generation) on_generation(s);
   }
   WriteResults();
@@ -147,7 +142,7 @@ void EvolutionRun::WriteCheckpoint(std::uint64_t evaluations_bytes, std::uint64_
 void EvolutionRun::WriteResults() {
   const json out = ArchiveFileJson(config_, completed_, initial_fitness_, archive_.members());
   WriteFileAtomically(files_.archive, out.dump(2) + "\n");
-  WriteFileAtomically(files_.best, GenomeToJson(archive_.best().genome).dump(2) + "\n");
+  SaveGenome(archive_.best().genome, files_.best);
 }
 
 }  // namespace walkers

@@ -2,11 +2,8 @@
 // let a run killed at any moment resume to the same result. Its configuration
 // and the summary of a generation are evolve/run_config.h's; its files and
 // their formats evolve/run_files.h's; what its evaluations run on is the
-// Evaluator given (evolve/evaluator.h).
-//
-// DIR/walkers.lock      locked by the one process writing the run (evolve/files.h)
-// DIR/replaced/         while --force replaces a run: the old run's files, until
-//                       the new run's first checkpoint is written
+// Evaluator given (evolve/evaluator.h); its folder's lock and --force's
+// set-aside are files/results_folder.h's.
 #pragma once
 
 #include <functional>
@@ -16,12 +13,11 @@
 #include <string>
 
 #include "evolve/evaluator.h"
-#include "evolve/files.h"
 #include "evolve/learner.h"
-#include "evolve/results_folder.h"
 #include "evolve/run_config.h"
 #include "evolve/run_files.h"
 #include "evolve/scaffold.h"
+#include "files/results_folder.h"
 
 namespace walkers {
 
@@ -29,7 +25,7 @@ class EvolutionRun {
  public:
   // Validates the configuration, then takes the directory's lock (held until
   // destruction; another process holding it is an error naming its pid), and
-  // only then reads or writes anything in it. Throws std::runtime_error with a
+  // only then reads or writes anything in it (ResultsFolder). Throws std::runtime_error with a
   // message naming the directory or file on any problem (holds a run, no run
   // to resume, unwritable, mismatched config, invalid checkpoint or CSV files,
   // a missing checkpoint beside results). Resuming never creates the directory.
@@ -60,8 +56,7 @@ class EvolutionRun {
 
   RunConfig config_;
   RunFiles files_;
-  std::optional<FolderLock> lock_;
-  std::unique_ptr<SetAside> replaced_;  // under kForce, until the first checkpoint
+  std::optional<ResultsFolder> folder_;
   Evaluator* evaluator_;
   std::unique_ptr<Scaffold> scaffold_;
   std::unique_ptr<Learner> learner_;

@@ -3,7 +3,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "control/input_file.h"
+#include "files/input_file.h"
 
 namespace walkers {
 using nlohmann::json;

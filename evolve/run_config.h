@@ -47,7 +47,7 @@ void RequireResumableAs(const RunConfig& stored, const RunConfig& requested, con
 // config.json's content: every field present, typed and in range, and no
 // other. Throws std::runtime_error whose message starts with `source`.
 RunConfig RunConfigFromJson(const nlohmann::json& json, const std::string& source);
-// The same from the file's text, parsed strictly (control/input_file.h).
+// The same from the file's text, parsed strictly (files/input_file.h).
 RunConfig ParseRunConfig(const std::string& text, const std::string& source);
 // Whether the run's files name its learner: only one other than the paper's
 // GA, so that the GA's runs keep their files.

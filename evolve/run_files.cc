@@ -9,8 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "control/input_file.h"
-#include "evolve/files.h"
+#include "files/csv.h"
+#include "files/input_file.h"
+#include "files/number_text.h"
+#include "files/results_folder.h"
 
 namespace walkers {
 namespace fs = std::filesystem;
@@ -29,12 +31,6 @@ std::string EvaluationsHeader() {
 namespace {
 
 constexpr int kCheckpointFormat = 1;
-
-std::string CsvQuoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 }  // namespace
 

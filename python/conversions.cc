@@ -5,7 +5,7 @@
 #include <mutex>
 #include <thread>
 
-#include "control/input_file.h"
+#include "files/input_file.h"
 
 namespace walkers::python {
 

@@ -22,7 +22,7 @@
 #include "control/evaluation.h"
 #include "control/evaluation_json.h"
 #include "control/genome.h"
-#include "control/input_file.h"
+#include "files/input_file.h"
 #include "control/preset.h"
 #include "control/walk_record.h"
 #include "evolve/evaluator.h"

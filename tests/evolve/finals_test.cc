@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "evolve/files.h"
+#include "files/durable_file.h"
+#include "files/input_file.h"
+#include "files/number_text.h"
 #include "tests/evolve/individuals.h"
 #include "tests/temp_dir_test.h"
 

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "control/input_file.h"
+#include "files/input_file.h"
 #include "evolve/genetic_algorithm.h"
 
 namespace walkers {

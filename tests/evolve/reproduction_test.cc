@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "evolve/files.h"
+#include "files/csv.h"
+#include "files/input_file.h"
+#include "files/results_folder.h"
 #include "tests/evolve/individuals.h"
 #include "tests/temp_dir_test.h"
 

@@ -11,7 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "evolve/files.h"
+#include "files/durable_file.h"
+#include "files/input_file.h"
 #include "tests/evolve/individuals.h"
 #include "tests/evolve/small_runs.h"
 #include "tests/temp_dir_test.h"

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "evolve/files.h"
 #include "evolve/run_files.h"
+#include "files/input_file.h"
 
 namespace walkers::testing {
 

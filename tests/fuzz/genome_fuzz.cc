@@ -6,7 +6,7 @@
 #include <string>
 
 #include "control/genome.h"
-#include "control/input_file.h"
+#include "files/input_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace walkers;

@@ -1,4 +1,4 @@
-#include "control/input_file.h"
+#include "files/input_file.h"
 
 #include <cerrno>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "control/number_text.h"
+#include "files/number_text.h"
 
 namespace walkers {
 namespace {

@@ -2,7 +2,8 @@
 // checkpoints): a key given twice is refused where nlohmann's parser would
 // keep the last one silently, nesting is bounded, and every message names the
 // file, the field and, for a number, its allowed range in the shortest form
-// that reads back exactly.
+// that reads back exactly. Every such problem is an InputError
+// (files/errors.h).
 #pragma once
 
 #include <cstdint>
@@ -12,14 +13,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace walkers {
+#include "files/errors.h"
 
-// An input file that cannot be read or is not valid; the message starts with
-// the file's name.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace walkers {
 
 // The whole file. Throws InputError "PATH: cannot open (reason)".
 std::string ReadFile(const std::string& path);

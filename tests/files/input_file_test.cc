@@ -1,4 +1,4 @@
-#include "control/input_file.h"
+#include "files/input_file.h"
 
 #include <gtest/gtest.h>
 
