@@ -3,26 +3,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "files/input_file.h"
 #include "evolve/genetic_algorithm.h"
+#include "files/input_file.h"
 
 namespace walkers {
 
-ProposalSource& ExternalLearner::Source(const BreedingInputs& in) const {
-  if (source_ == nullptr) {
-    throw std::runtime_error("generation " + std::to_string(in.generation) + ": the learner " + spec().name +
-                             " proposes from a program outside walkers; drive its run with the Python module's "
-                             "walkers.Run (docs/python.md)");
-  }
-  return *source_;
-}
-
-std::vector<Individual> ExternalLearner::Propose(const BreedingInputs& in, const Archive&) {
-  const std::vector<Genome> genomes = Source(in).Propose(in, population_);
+std::vector<Individual> ExternalLearner::Children(const BreedingInputs& in, const std::vector<Genome>& genomes) const {
   if (static_cast<int>(genomes.size()) != population_) {
-    throw std::runtime_error("generation " + std::to_string(in.generation) + ": the learner " + spec().name +
-                             " proposed " + std::to_string(genomes.size()) + " genomes for " +
-                             std::to_string(population_) + " children");
+    throw InputError("generation " + std::to_string(in.generation) + ": the learner " + spec().name + " proposed " +
+                     std::to_string(genomes.size()) + " genomes for " + std::to_string(population_) + " children");
   }
   std::vector<Individual> children(genomes.size());
   for (std::size_t c = 0; c < children.size(); ++c) {
@@ -34,15 +23,13 @@ std::vector<Individual> ExternalLearner::Propose(const BreedingInputs& in, const
   return children;
 }
 
-void ExternalLearner::Tell(const BreedingInputs& in, const std::vector<Individual>& evaluated) {
-  Source(in).Tell(in, evaluated);
+std::vector<Individual> ExternalLearner::Propose(const BreedingInputs& in, const Archive&) {
+  throw std::runtime_error("generation " + std::to_string(in.generation) + ": the learner " + spec().name +
+                           " proposes from a program outside walkers; drive its run with the Python module's "
+                           "walkers.Run (docs/python.md)");
 }
 
-// checkpoint.json's "learner": {"state": the program's state}, an object even
-// when the program's state is null
-nlohmann::json ExternalLearner::State() const {
-  return {{"state", source_ == nullptr ? restored_ : source_->State()}};
-}
+nlohmann::json ExternalLearner::StateOf(const nlohmann::json& program_state) { return {{"state", program_state}}; }
 
 void ExternalLearner::Restore(const nlohmann::json& state, int, const std::string& source) {
   const JsonFields f(state, source, "learner.");
@@ -52,7 +39,7 @@ void ExternalLearner::Restore(const nlohmann::json& state, int, const std::strin
 
 std::unique_ptr<Learner> MakeExternalLearner(const LearnerSpec& spec, const GeneticAlgorithmConfig& ga,
                                              std::uint64_t) {
-  return std::make_unique<ExternalLearner>(spec, ga.population, nullptr);
+  return std::make_unique<ExternalLearner>(spec, ga.population);
 }
 
 }  // namespace walkers

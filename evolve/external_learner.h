@@ -2,10 +2,11 @@
 // this one (an optimiser in Python, through the module's walkers.Run:
 // docs/python.md). The run is the same as a built-in learner's: the
 // scaffold's ceiling, the GA's admission rules, evaluation, the archive, the
-// files and checkpoints are EvolutionRun's. Only the three questions a run
-// asks its learner go out: the generation's proposals, the evaluated children
-// (told) and the learner's state for the checkpoint, which the outside program
-// gives as any JSON value and gets back when the run resumes.
+// files and checkpoints are EvolutionRun's. The outside program drives the
+// run's generations itself (EvolutionRun::BeginGeneration, EvaluateChildren,
+// FinishGeneration): it proposes the children (Children), is given them
+// evaluated, and hands its state for the checkpoint (StateOf), any JSON value,
+// which it gets back when the run resumes (restored_state).
 #pragma once
 
 #include <cstdint>
@@ -20,49 +21,38 @@ namespace walkers {
 
 struct GeneticAlgorithmConfig;
 
-// The outside program, as the external learner sees it. Its calls come from
-// the run's thread, one at a time, in the order Propose, Tell, State for each
-// generation; any of them may throw to end the run.
-class ProposalSource {
- public:
-  virtual ~ProposalSource() = default;
-  // generation in.generation's children's genomes, `children` of them
-  virtual std::vector<Genome> Propose(const BreedingInputs& in, int children) = 0;
-  // the children as the run evaluated them (after the GA's rules), in order
-  virtual void Tell(const BreedingInputs& in, const std::vector<Individual>& evaluated) = 0;
-  // the program's state after it was told, for the checkpoint
-  virtual nlohmann::json State() = 0;
-};
-
 class ExternalLearner : public Learner {
  public:
-  // `source` may be null (a learner made to read a checkpoint): it then
-  // proposes nothing, and a run of it is an error naming walkers.Run.
-  ExternalLearner(const LearnerSpec& spec, int population, ProposalSource* source)
-      : Learner(spec), population_(population), source_(source) {}
+  ExternalLearner(const LearnerSpec& spec, int population) : Learner(spec), population_(population) {}
 
-  // the source's genomes, checked to be one per child; their parents name the learner
+  // Generation in.generation's children from the outside program's genomes,
+  // one per child; their parents name the learner. Throws InputError when
+  // there are not as many genomes as children.
+  std::vector<Individual> Children(const BreedingInputs& in, const std::vector<Genome>& genomes) const;
+
+  // Throws std::runtime_error: the outside program proposes, through the
+  // Python module's walkers.Run, never the run's own loop (EvolutionRun::Run).
   std::vector<Individual> Propose(const BreedingInputs& in, const Archive& archive) override;
-  void Tell(const BreedingInputs& in, const std::vector<Individual>& evaluated) override;
+  void Tell(const BreedingInputs&, const std::vector<Individual>&) override {}
 
   bool KeepsState() const override { return true; }
-  // {"state": the source's state}
-  nlohmann::json State() const override;
-  // keeps the state for the source to take (restored_state); throws
-  // InputError naming `source` when `state` is not State()'s form
+  // checkpoint.json's "learner" for the outside program's state: {"state": it},
+  // an object even when the state is null
+  static nlohmann::json StateOf(const nlohmann::json& program_state);
+  // StateOf the state the run was resumed with (null for a fresh run)
+  nlohmann::json State() const override { return StateOf(restored_); }
+  // keeps the state for the outside program to take (restored_state); throws
+  // InputError naming `source` when `state` is not StateOf's form
   void Restore(const nlohmann::json& state, int completed_generations, const std::string& source) override;
   // the state a resumed run was checkpointed with; null for a fresh run
   const nlohmann::json& restored_state() const { return restored_; }
 
  private:
-  ProposalSource& Source(const BreedingInputs& in) const;
-
   int population_;
-  ProposalSource* source_;
   nlohmann::json restored_;
 };
 
-// The learner list's maker: an external learner without a source.
+// The learner list's maker.
 std::unique_ptr<Learner> MakeExternalLearner(const LearnerSpec& spec, const GeneticAlgorithmConfig& ga,
                                              std::uint64_t seed);
 

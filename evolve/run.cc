@@ -4,9 +4,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
 #include "files/durable_file.h"
+#include "files/errors.h"
 #include "files/input_file.h"
 
 namespace walkers {
@@ -19,10 +18,9 @@ EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, Star
   // the whole configuration first: nothing is touched for one that cannot run
   config_.Validate();
   scaffold_ = MakeScaffold(config.scaffold_case, config.preset);
-  if (learner && learner->spec().name != config.learner) {
-    throw std::invalid_argument("the learner given is " + std::string(learner->spec().name) + ", not the run's (" +
-                                config.learner + ")");
-  }
+  WALKERS_CHECK(!learner || learner->spec().name == config.learner,
+                "the learner given is " + std::string(learner->spec().name) + ", not the run's (" + config.learner +
+                    ")");
   learner_ = learner ? std::move(learner) : MakeLearner(config.learner, config.ga, config.seed);
   folder_.emplace(dir, "run", mode, files_.checkpoint, [&] {
     FolderContents held{RunFiles::Names(), "", false};
@@ -37,6 +35,7 @@ EvolutionRun::EvolutionRun(const RunConfig& config, const std::string& dir, Star
   }
 }
 
+// folder_ goes first, while the learner and the files are still there
 EvolutionRun::~EvolutionRun() = default;
 
 void EvolutionRun::StartFresh() {
@@ -58,9 +57,8 @@ void EvolutionRun::Resume() {
   }
   Checkpoint cp = ParseCheckpoint(ReadFile(files_.checkpoint), stored, files_.checkpoint);
   if (cp.completed_generations > config_.generations) {
-    throw std::runtime_error(files_.dir + ": the run has " + std::to_string(cp.completed_generations) +
-                             " generations already, more than the " + std::to_string(config_.generations) +
-                             " asked for");
+    throw InputError(files_.dir + ": the run has " + std::to_string(cp.completed_generations) +
+                     " generations already, more than the " + std::to_string(config_.generations) + " asked for");
   }
   std::set<GenomeKey> seen = CheckRunFilesUpTo(files_, cp, stored);
 
@@ -74,69 +72,88 @@ void EvolutionRun::Resume() {
   TruncateFile(files_.generations, cp.generations_bytes);
   // a longer run than first asked for: the config says so from now on
   WriteFileAtomically(files_.config, RunConfigToJson(config_).dump(2) + "\n");
+  // killed after its last checkpoint, before its results were written
+  if (done()) WriteResults();
 }
 
 void EvolutionRun::Run(const std::function<void(const GenerationSummary&)>& on_generation) {
-  MutationRules rules;
-  rules.probability = config_.ga.mutation_probability;
-  rules.body_gene = config_.preset.body_gene_mutation;
-  rules.body_redraw = ScaffoldSpecOf(config_.scaffold_case).authors_body_redraw;
-
-  for (int g = completed_; g < config_.generations; ++g) {
-    // the scaffold sets this generation's ceiling from what the archive
-    // achieved so far; the authors' evolver starts that measure at InitF
-    const double achieved = g == 0 ? initial_fitness_ : archive_.AverageOfBest(3);
-    const double ceiling = scaffold_->Ceiling({g, achieved, initial_fitness_});
-    // the learner proposes this generation's children under the scaffold's
-    // ceiling; the GA's rules admit them (clamped into the bounds, duplicates
-    // drawn again)
-    const BreedingInputs in{config_.seed, g, ceiling, rules};
-    std::vector<Individual> children = learner_->Propose(in, archive_);
-    AdmitChildren(*learner_, in, &children, &seen_);
-
-    // the costly children first, so the generation waits less for its slowest
-    std::vector<double> expected_costs;
-    for (const Individual& c : children) expected_costs.push_back(ExpectedCost(c, archive_));
-    const auto start = std::chrono::steady_clock::now();
-    EvaluateIndividuals(*evaluator_, &children, config_.preset, config_.evaluation, expected_costs);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    learner_->Tell(in, children);
-    archive_.Merge(children);
-
-    GenerationSummary s;
-    s.generation = g;
-    s.generations = config_.generations;
-    s.best_fitness = archive_.best().fitness();
-    s.ave_best3 = archive_.AverageOfBest(3);
-    s.archive_mean = archive_.Mean();
-    s.ceiling = ceiling;
-    s.best_half_body_x = archive_.best().genome[kHalfBodyX];
-    s.best_femur = archive_.best().genome[kFemurLength];
-    s.best_tibia = archive_.best().genome[kTibiaLength];
-    s.best_gait = archive_.best().result.gait;
-    for (const Individual& c : children) s.falls += c.result.fell ? 1 : 0;
-    s.evaluations = static_cast<int>(children.size());
-    s.evaluation_seconds = seconds;
-    s.evals_per_s = seconds > 0 ? children.size() / seconds : 0.0;
-
-    // the rows reach the disk first; the checkpoint then names them
-    std::string rows;
-    for (const Individual& c : children) rows += EvaluationRow(c);
-    const std::uint64_t evaluations_bytes = AppendDurably(files_.evaluations, rows);
-    const std::uint64_t generations_bytes = AppendDurably(files_.generations, GenerationRow(s));
-    completed_ = g + 1;
-    WriteCheckpoint(evaluations_bytes, generations_bytes);
-    folder_->DiscardReplaced();  // the new run has its first checkpoint
-    if (on_generation) on_generation(s);
+  while (!done()) {
+    const BreedingInputs in = BeginGeneration();
+    const EvaluatedChildren evaluated = EvaluateChildren(in, learner_->Propose(in, archive_));
+    learner_->Tell(in, evaluated.children);
+    const GenerationSummary summary = FinishGeneration(in, evaluated, learner_->State());
+    if (on_generation) on_generation(summary);
   }
-  WriteResults();
 }
 
-void EvolutionRun::WriteCheckpoint(std::uint64_t evaluations_bytes, std::uint64_t generations_bytes) {
+BreedingInputs EvolutionRun::BeginGeneration() const {
+  const int g = completed_;
+  WALKERS_CHECK(!done(), "generation " + std::to_string(g) + " begun; the run has " +
+                             std::to_string(config_.generations));
+  BreedingInputs in;
+  in.seed = config_.seed;
+  in.generation = g;
+  // the scaffold sets this generation's ceiling from what the archive
+  // achieved so far; the authors' evolver starts that measure at InitF
+  const double achieved = g == 0 ? initial_fitness_ : archive_.AverageOfBest(3);
+  in.body_ceiling = scaffold_->Ceiling({g, achieved, initial_fitness_});
+  in.rules.probability = config_.ga.mutation_probability;
+  in.rules.body_gene = config_.preset.body_gene_mutation;
+  in.rules.body_redraw = ScaffoldSpecOf(config_.scaffold_case).authors_body_redraw;
+  return in;
+}
+
+EvaluatedChildren EvolutionRun::EvaluateChildren(const BreedingInputs& in, std::vector<Individual> proposals) {
+  WALKERS_CHECK(in.generation == completed_, "generation " + std::to_string(in.generation) +
+                                                 " evaluated after " + std::to_string(completed_) + " completed");
+  // the GA's rules admit the proposals (clamped into the bounds, duplicates
+  // drawn again)
+  EvaluatedChildren out{std::move(proposals), 0.0};
+  AdmitChildren(*learner_, in, &out.children, &seen_);
+  // the costly children first, so the generation waits less for its slowest
+  std::vector<double> expected_costs;
+  for (const Individual& c : out.children) expected_costs.push_back(ExpectedCost(c, archive_));
+  const auto start = std::chrono::steady_clock::now();
+  EvaluateIndividuals(*evaluator_, &out.children, config_.preset, config_.evaluation, expected_costs);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+GenerationSummary EvolutionRun::FinishGeneration(const BreedingInputs& in, const EvaluatedChildren& evaluated,
+                                                 const json& learner_state) {
+  const std::vector<Individual>& children = evaluated.children;
+  WALKERS_CHECK(in.generation == completed_, "generation " + std::to_string(in.generation) +
+                                                 " finished after " + std::to_string(completed_) + " completed");
+  archive_.Merge(children);
+
+  GenerationSummary s;
+  s.generation = in.generation;
+  s.generations = config_.generations;
+  s.best_fitness = archive_.best().fitness();
+  s.ave_best3 = archive_.AverageOfBest(3);
+  s.archive_mean = archive_.Mean();
+  s.ceiling = in.body_ceiling;
+  s.best_half_body_x = archive_.best().genome[kHalfBodyX];
+  s.best_femur = archive_.best().genome[kFemurLength];
+  s.best_tibia = archive_.best().genome[kTibiaLength];
+  s.best_gait = archive_.best().result.gait;
+  for (const Individual& c : children) s.falls += c.result.fell ? 1 : 0;
+  s.evaluations = static_cast<int>(children.size());
+  s.evaluation_seconds = evaluated.seconds;
+  s.evals_per_s = evaluated.seconds > 0 ? children.size() / evaluated.seconds : 0.0;
+
+  // the rows reach the disk first; the checkpoint then names them
+  std::string rows;
+  for (const Individual& c : children) rows += EvaluationRow(c);
+  const std::uint64_t evaluations_bytes = AppendDurably(files_.evaluations, rows);
+  const std::uint64_t generations_bytes = AppendDurably(files_.generations, GenerationRow(s));
+  completed_ = in.generation + 1;
   const Checkpoint cp{completed_,          initial_fitness_, evaluations_bytes, generations_bytes, archive_.members(),
-                      learner_->State()};
+                      learner_state};
   WriteFileAtomically(files_.checkpoint, CheckpointToJson(cp).dump() + "\n");
+  folder_->DiscardReplaced();  // the new run has its first checkpoint
+  if (done()) WriteResults();
+  return s;
 }
 
 void EvolutionRun::WriteResults() {

@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <condition_variable>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -24,77 +21,24 @@
 namespace walkers::python {
 namespace {
 
-// Where the run's thread stands, as the Python side sees it.
-enum class Phase {
-  kWorking,    // evaluating, writing files: Python waits
-  kProposing,  // waits in Propose for the generation's genomes
-  kTold,       // told the evaluated children; waits in State for the checkpoint's state
-  kFinished,   // every generation done, archive.json and best.json written
-  kFailed,     // stopped by an error, or by close()
-};
-
-// Thrown on the run's thread when Python closes the run while it waits.
-struct Closed {};
-
-// One run and its thread. Python's calls hand the run what it waits for and
-// wait, without the GIL, until it waits again; the run's thread never touches
-// Python. One call at a time: a second Python thread's call is refused.
-class PythonRun : public ProposalSource {
+// One run, driven by Python's calls: bounds() begins a generation,
+// evaluate() evaluates its children with the GIL released, checkpoint()
+// finishes it. A generation begun or evaluated is kept here between the
+// calls; one call at a time (a second Python thread's call is refused).
+class PythonRun {
  public:
   PythonRun(const RunConfig& config, const std::string& dir, StartMode mode, int threads)
-      : evaluator_(ThreadPool(threads)), population_(config.ga.population), generations_(config.generations) {
-    auto learner = std::make_unique<ExternalLearner>(LearnerByName(config.learner), config.ga.population, this);
-    const ExternalLearner* external = learner.get();
-    run_ = std::make_unique<EvolutionRun>(config, dir, mode, *evaluator_, std::move(learner));
-    restored_ = external->restored_state();
-    completed_ = run_->completed_generations();
-    thread_ = std::thread([this] { Loop(); });
-  }
-  ~PythonRun() override { Close(); }
+      : evaluator_(ThreadPool(threads)),
+        run_(std::make_unique<EvolutionRun>(config, dir, mode, *evaluator_)),
+        population_(config.ga.population),
+        generations_(config.generations),
+        restored_(external().restored_state()) {}
   PythonRun(const PythonRun&) = delete;
   PythonRun& operator=(const PythonRun&) = delete;
 
-  // ---- the run's thread: the external learner's questions ----
-
-  std::vector<Genome> Propose(const BreedingInputs& in, int) override {
-    std::unique_lock<std::mutex> lock(mutex_);
-    in_ = in;
-    phase_ = Phase::kProposing;
-    changed_.notify_all();
-    changed_.wait(lock, [&] { return proposals_.has_value() || closing_; });
-    if (closing_) throw Closed{};
-    std::vector<Genome> genomes = std::move(*proposals_);
-    proposals_.reset();
-    return genomes;
-  }
-
-  void Tell(const BreedingInputs&, const std::vector<Individual>& evaluated) override {
-    std::lock_guard<std::mutex> lock(mutex_);
-    evaluated_ = evaluated;
-    phase_ = Phase::kTold;
-    changed_.notify_all();
-  }
-
-  nlohmann::json State() override {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [&] { return state_.has_value() || closing_; });
-    if (closing_) throw Closed{};
-    nlohmann::json state = std::move(*state_);
-    state_.reset();
-    return state;
-  }
-
-  // ---- Python's calls ----
-
   py::tuple Bounds() {
     const Busy busy(this);
-    BreedingInputs in;
-    {
-      py::gil_scoped_release no_gil;
-      std::unique_lock<std::mutex> lock(mutex_);
-      Require(Phase::kProposing, "bounds()", lock);
-      in = in_;
-    }
+    const BreedingInputs& in = Begun("bounds()");
     py::array_t<double> lo(kNumGenes), hi(kNumGenes);
     for (int k = 0; k < kNumGenes; ++k) {
       const GeneBounds b = ChildGeneBounds(k, in.body_ceiling);
@@ -106,6 +50,7 @@ class PythonRun : public ProposalSource {
 
   py::tuple Evaluate(const py::handle& proposals) {
     const Busy busy(this);
+    const BreedingInputs in = Begun("evaluate()");
     const DoubleArray rows = GeneRows(proposals, "genomes", population_);
     std::vector<Genome> genomes;
     for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
@@ -122,90 +67,77 @@ class PythonRun : public ProposalSource {
       }
       genomes.push_back(genome);
     }
-    std::vector<Individual> evaluated;
-    {
+    const std::vector<Individual> children = external().Children(in, genomes);
+    EvaluatedChildren evaluated;
+    Failing([&] {
       py::gil_scoped_release no_gil;
-      std::unique_lock<std::mutex> lock(mutex_);
-      Answer(Phase::kProposing, "evaluate()", [&] { proposals_ = std::move(genomes); }, lock);
-      Require(Phase::kTold, "evaluate()", lock);
-      evaluated = evaluated_;
-    }
-    py::array_t<double> genes({static_cast<py::ssize_t>(evaluated.size()), static_cast<py::ssize_t>(kNumGenes)});
+      evaluated = run_->EvaluateChildren(in, children);
+    });
+    py::array_t<double> genes({static_cast<py::ssize_t>(evaluated.children.size()), static_cast<py::ssize_t>(kNumGenes)});
     std::vector<EvaluationResult> results;
-    for (std::size_t c = 0; c < evaluated.size(); ++c) {
-      std::copy(evaluated[c].genome.genes.begin(), evaluated[c].genome.genes.end(), genes.mutable_data(c, 0));
-      results.push_back(evaluated[c].result);
+    py::list lineages;
+    for (std::size_t c = 0; c < evaluated.children.size(); ++c) {
+      const Individual& child = evaluated.children[c];
+      std::copy(child.genome.genes.begin(), child.genome.genes.end(), genes.mutable_data(c, 0));
+      results.push_back(child.result);
+      lineages.append(child.parents);
     }
     py::dict arrays = ResultArrays(results);
-    py::list parents;
-    for (const Individual& c : evaluated) parents.append(c.parents);
-    arrays["parents"] = parents;
+    arrays["parents"] = lineages;
+    evaluated_ = std::move(evaluated);
     return py::make_tuple(genes, arrays);
   }
 
   void Checkpoint(const py::handle& state) {
     const Busy busy(this);
-    nlohmann::json json = JsonOf(state, "state");
-    py::gil_scoped_release no_gil;
-    std::unique_lock<std::mutex> lock(mutex_);
-    Answer(Phase::kTold, "checkpoint()", [&] { state_ = std::move(json); }, lock);
-    if (phase_ == Phase::kFailed) throw std::runtime_error(error_);
+    const nlohmann::json learner_state = ExternalLearner::StateOf(JsonOf(state, "state"));
+    const BreedingInputs in = Begun("checkpoint()");
+    if (!evaluated_) {
+      throw std::runtime_error("checkpoint(): generation " + std::to_string(in.generation) +
+                               " is not evaluated yet; call evaluate(genomes) first");
+    }
+    Failing([&] {
+      py::gil_scoped_release no_gil;
+      last_ = run_->FinishGeneration(in, *evaluated_, learner_state);
+    });
+    begun_.reset();
+    evaluated_.reset();
   }
 
   // Whether every generation is done; a done run's files are final, and its
   // folder is released.
   bool Done() {
     const Busy busy(this);
-    bool finished = false;
-    {
-      py::gil_scoped_release no_gil;
-      std::unique_lock<std::mutex> lock(mutex_);
-      changed_.wait(lock, [&] { return phase_ != Phase::kWorking; });
-      if (phase_ == Phase::kFailed) throw std::runtime_error(error_);
-      finished = phase_ == Phase::kFinished;
-    }
-    if (finished) Close();
-    return finished;
+    if (run_ && run_->done()) Close();
+    return finished_;
   }
 
-  int completed() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return completed_;
-  }
+  int completed() const { return run_ ? run_->completed_generations() : completed_; }
   int generations() const { return generations_; }
   int population() const { return population_; }
   py::object restored_state() const { return ToPython(restored_); }
 
   // The last generation's summary, as a dict; None before the first.
-  py::object Progress() {
-    std::optional<GenerationSummary> s;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      s = last_;
-    }
-    if (!s) return py::none();
+  py::object Progress() const {
+    if (!last_) return py::none();
     py::dict out;
-    out["generation"] = s->generation;
-    out["best_fitness"] = s->best_fitness;
-    out["ave_best3"] = s->ave_best3;
-    out["ceiling"] = s->ceiling;
-    out["falls"] = s->falls;
-    out["evals_per_s"] = s->evals_per_s;
+    out["generation"] = last_->generation;
+    out["best_fitness"] = last_->best_fitness;
+    out["ave_best3"] = last_->ave_best3;
+    out["ceiling"] = last_->ceiling;
+    out["falls"] = last_->falls;
+    out["evals_per_s"] = last_->evals_per_s;
     return out;
   }
 
-  // Stops the run's thread (a run waiting for Python ends there; one
-  // evaluating finishes the generation's evaluations first) and releases the
-  // folder: what the last checkpoint holds is what a resume continues.
+  // Releases the folder: what the last checkpoint holds is what a resume
+  // continues (a generation begun or evaluated since is dropped).
   void Close() {
-    if (thread_.joinable()) {
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        closing_ = true;
-      }
-      changed_.notify_all();
-      thread_.join();  // the run's thread never needs the GIL
-    }
+    if (!run_) return;
+    finished_ = run_->done();
+    completed_ = run_->completed_generations();
+    begun_.reset();
+    evaluated_.reset();
     run_.reset();
   }
 
@@ -227,77 +159,47 @@ class PythonRun : public ProposalSource {
     PythonRun* run_;
   };
 
-  void Loop() {
-    std::string error;
-    Phase end = Phase::kFinished;
-    try {
-      run_->Run([this](const GenerationSummary& s) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        completed_ = s.generation + 1;
-        last_ = s;
-      });
-    } catch (const Closed&) {
-      end = Phase::kFailed;
-      error = "the run is closed";
-    } catch (const std::exception& e) {
-      end = Phase::kFailed;
-      error = e.what();
+  // The generation under way, begun if none is: an error naming `call` when
+  // the run is closed or done, or when its generation is evaluated and
+  // `call` is not checkpoint().
+  const BreedingInputs& Begun(const std::string& call) {
+    if (!run_) {
+      if (finished_) throw std::runtime_error(call + ": the run is done (" + std::to_string(generations_) + " generations)");
+      throw std::runtime_error(call + ": the run is closed");
     }
-    std::lock_guard<std::mutex> lock(mutex_);
-    phase_ = end;
-    error_ = error;
-    changed_.notify_all();
+    if (run_->done()) throw std::runtime_error(call + ": the run is done (" + std::to_string(generations_) + " generations)");
+    if (evaluated_ && call != "checkpoint()") {
+      throw std::runtime_error(call + ": generation " + std::to_string(begun_->generation) +
+                               " is evaluated; call checkpoint(state) first");
+    }
+    if (!begun_) begun_ = run_->BeginGeneration();
+    return *begun_;
   }
 
-  // Requires the run to wait at `at` (as Require), gives it what it waits for
-  // (`give`, under the lock), and waits until it waits again or has stopped.
-  template <typename Give>
-  void Answer(Phase at, const std::string& call, Give give, std::unique_lock<std::mutex>& lock) {
-    Require(at, call, lock);
-    give();
-    phase_ = Phase::kWorking;
-    changed_.notify_all();
-    changed_.wait(lock, [&] { return phase_ != Phase::kWorking; });
-  }
+  const ExternalLearner& external() const { return dynamic_cast<const ExternalLearner&>(run_->learner()); }
 
-  // Waits until the run waits for Python or has stopped, then requires it to
-  // wait at `wanted`: an error naming `call` otherwise.
-  void Require(Phase wanted, const std::string& call, std::unique_lock<std::mutex>& lock) {
-    changed_.wait(lock, [&] { return phase_ != Phase::kWorking; });
-    if (phase_ == wanted) return;
-    switch (phase_) {
-      case Phase::kFailed:
-        throw std::runtime_error(error_);
-      case Phase::kFinished:
-        throw std::runtime_error(call + ": the run is done (" + std::to_string(generations_) + " generations)");
-      case Phase::kTold:
-        throw std::runtime_error(call + ": generation " + std::to_string(in_.generation) +
-                                 " is evaluated; call checkpoint(state) first");
-      default:
-        throw std::runtime_error(call + ": generation " + std::to_string(in_.generation) +
-                                 " is not evaluated yet; call evaluate(genomes) first");
+  // Runs `step` of the run; a failure closes the run at its last checkpoint
+  // before it reaches Python.
+  template <typename Step>
+  void Failing(const Step& step) {
+    try {
+      step();
+    } catch (...) {
+      Close();
+      throw;
     }
   }
 
   std::shared_ptr<Evaluator> evaluator_;
-  std::unique_ptr<EvolutionRun> run_;
+  std::unique_ptr<EvolutionRun> run_;  // null once closed
   const int population_;
   const int generations_;
-  nlohmann::json restored_;
-  std::thread thread_;
-  bool busy_ = false;  // a Python call is under way (read and written with the GIL)
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  // guarded by mutex_
-  Phase phase_ = Phase::kWorking;
-  std::string error_;
-  bool closing_ = false;
-  BreedingInputs in_;
-  std::optional<std::vector<Genome>> proposals_;
-  std::vector<Individual> evaluated_;
-  std::optional<nlohmann::json> state_;
-  int completed_ = 0;
+  const nlohmann::json restored_;
+  bool busy_ = false;     // a Python call is under way (read and written with the GIL)
+  bool finished_ = false;  // closed with every generation done
+  int completed_ = 0;      // the generations completed when closed
+  std::optional<BreedingInputs> begun_;
+  std::optional<EvaluatedChildren> evaluated_;
   std::optional<GenerationSummary> last_;
 };
 
@@ -320,7 +222,6 @@ std::unique_ptr<PythonRun> MakeRun(const py::handle& out, const std::string& cas
 }
 
 }  // namespace
-
 void BindRun(py::module_& m) {
   py::class_<PythonRun>(m, "Run",
                         "An evolution run under a scaffold whose children a Python optimiser proposes (ask/tell). "

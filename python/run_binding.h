@@ -1,9 +1,10 @@
 // walkers.Run: an evolution run under a scaffold whose children a Python
 // optimiser proposes (ask/tell), writing the run folder `walkers evolve
-// --learner` writes. The run's own loop (EvolutionRun, evolve/run.h) runs on
-// a thread of its own with the external learner (evolve/external_learner.h),
-// and meets Python at the learner's three questions: proposals, evaluated
-// children, and the optimiser's state for the checkpoint (docs/python.md).
+// --learner` writes. Python drives the run's generations (EvolutionRun,
+// evolve/run.h) with the external learner (evolve/external_learner.h):
+// bounds() begins a generation, evaluate() evaluates its proposals with the
+// GIL released, checkpoint() finishes it with the optimiser's state
+// (docs/python.md).
 #pragma once
 
 #include <pybind11/pybind11.h>

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -101,6 +102,50 @@ TEST_F(RunTest, KilledAndResumedEndsIdenticalToAnUninterruptedRun) {
   EXPECT_EQ(resumed.completed_generations(), 2);
   resumed.Run();
   ExpectSameRun(Dir("whole"), Dir("killed"));
+}
+
+// The caller drives each generation in two halves, acting between them, as
+// the Python module's ask/tell run does: the files are Run()'s.
+TEST_F(RunTest, AGenerationDrivenHalfByHalfIsRunsGeneration) {
+  EvolutionRun(SmallRun(), Dir("run"), StartMode::kNew, Threads(2)).Run();
+
+  EvolutionRun driven(SmallRun(), Dir("driven"), StartMode::kNew, Threads(2));
+  std::unique_ptr<Learner> learner = MakeLearner("ga", SmallRun().ga, SmallRun().seed);
+  int generations = 0;
+  while (!driven.done()) {
+    const BreedingInputs in = driven.BeginGeneration();
+    EXPECT_EQ(in.generation, driven.completed_generations());
+    // beginning a generation changes nothing: begun again, it is the same
+    EXPECT_EQ(driven.BeginGeneration().body_ceiling, in.body_ceiling);
+    const EvaluatedChildren evaluated = driven.EvaluateChildren(in, learner->Propose(in, driven.archive()));
+    ASSERT_EQ(evaluated.children.size(), 8u);
+    EXPECT_FALSE(fs::exists(RunFiles(Dir("driven")).archive));
+    const GenerationSummary s = driven.FinishGeneration(in, evaluated, learner->State());
+    EXPECT_EQ(s.generation, generations++);
+    EXPECT_EQ(s.ceiling, in.body_ceiling);
+  }
+  EXPECT_EQ(generations, SmallRun().generations);
+  ExpectSameRun(Dir("run"), Dir("driven"));
+  // a generation out of order is a bug of the caller's, named where it was found
+  try {
+    driven.BeginGeneration();
+    FAIL() << "began a generation of a finished run";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("run.cc"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(RunTest, AFinishedRunResumedWritesItsResultsAgain) {
+  EvolutionRun(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kNew, Threads(2)).Run();
+  const RunFiles files(Dir("a"));
+  const std::string archive = ReadFile(files.archive), best = ReadFile(files.best);
+  // killed after its last checkpoint, before its results were written
+  fs::remove(files.archive);
+  fs::remove(files.best);
+  EvolutionRun resumed(SmallRun(ScaffoldCase::kFree, 2), Dir("a"), StartMode::kResume, Threads(2));
+  EXPECT_TRUE(resumed.done());
+  EXPECT_EQ(ReadFile(files.archive), archive);
+  EXPECT_EQ(ReadFile(files.best), best);
 }
 
 TEST_F(RunTest, AResumedRunCanBeExtended) {
