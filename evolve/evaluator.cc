@@ -1,7 +1,6 @@
 #include "evolve/evaluator.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <string>
 
 namespace walkers {
@@ -69,32 +68,11 @@ void EvaluateIndividuals(Evaluator& evaluator, std::vector<Individual>* individu
   evaluator.EvaluateAll(tasks);
 }
 
-namespace {
-
-// the members of `parents` ("g/c", "g/c+g/c"; "" or a learner's name: none)
-std::vector<std::pair<int, int>> ParentIds(const std::string& parents) {
-  std::vector<std::pair<int, int>> ids;
-  std::size_t begin = 0;
-  while (begin < parents.size()) {
-    std::size_t end = parents.find('+', begin);
-    if (end == std::string::npos) end = parents.size();
-    const std::string id = parents.substr(begin, end - begin);
-    const std::size_t slash = id.find('/');
-    if (slash != std::string::npos && slash > 0 && id.find_first_not_of("0123456789/") == std::string::npos) {
-      ids.emplace_back(std::atoi(id.substr(0, slash).c_str()), std::atoi(id.substr(slash + 1).c_str()));
-    }
-    begin = end + 1;
-  }
-  return ids;
-}
-
-}  // namespace
-
 double ExpectedCost(const Individual& child, const Archive& archive) {
   double cost = 0;
-  for (const auto& [generation, index] : ParentIds(child.parents)) {
+  for (const Lineage::Parent& parent : child.lineage.parents) {
     for (const Individual& member : archive.members()) {
-      if (member.generation == generation && member.child == index) {
+      if (member.generation == parent.generation && member.child == parent.child) {
         cost = std::max(cost, static_cast<double>(member.result.cvode_steps));
       }
     }

@@ -17,7 +17,7 @@ std::vector<Individual> ExternalLearner::Children(const BreedingInputs& in, cons
   for (std::size_t c = 0; c < children.size(); ++c) {
     children[c].generation = in.generation;
     children[c].child = static_cast<int>(c);
-    children[c].parents = spec().name;
+    children[c].lineage = Lineage::ProposedBy(spec().name);
     children[c].genome = genomes[c];
   }
   return children;

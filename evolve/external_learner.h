@@ -26,7 +26,7 @@ class ExternalLearner : public Learner {
   ExternalLearner(const LearnerSpec& spec, int population) : Learner(spec), population_(population) {}
 
   // Generation in.generation's children from the outside program's genomes,
-  // one per child; their parents name the learner. Throws InputError when
+  // one per child; their lineage names the learner. Throws InputError when
   // there are not as many genomes as children.
   std::vector<Individual> Children(const BreedingInputs& in, const std::vector<Genome>& genomes) const;
 

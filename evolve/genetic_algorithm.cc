@@ -60,7 +60,7 @@ std::vector<Individual> GeneticAlgorithm::Propose(const BreedingInputs& in, cons
     draws_.push_back({initial, Random(in.seed, 0, 0)});
     for (int c = 1; c < config_.population; ++c) {
       draw(c, initial);
-      children[c].parents = "0/0";
+      children[c].lineage = Lineage::Of({{0, 0}});
     }
     return children;
   }
@@ -74,7 +74,7 @@ std::vector<Individual> GeneticAlgorithm::Propose(const BreedingInputs& in, cons
   for (int c = 0; c < config_.mutation_children; ++c) {
     const Individual& p = parents[mutation_parents.Next()];
     draw(c, p.genome);
-    children[c].parents = p.id();
+    children[c].lineage = Lineage::Of({{p.generation, p.child}});
   }
   // crossover children: the mean of two parents, then mutated
   ParentDraw crossover_parents(static_cast<int>(parents.size()),
@@ -83,7 +83,7 @@ std::vector<Individual> GeneticAlgorithm::Propose(const BreedingInputs& in, cons
     const Individual& a = parents[crossover_parents.Next()];
     const Individual& b = parents[crossover_parents.Next()];
     draw(c, Crossover(a.genome, b.genome));
-    children[c].parents = a.id() + "+" + b.id();
+    children[c].lineage = Lineage::Of({{a.generation, a.child}, {b.generation, b.child}});
   }
   return children;
 }

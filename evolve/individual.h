@@ -3,6 +3,7 @@
 // evaluated, and what the performance scaffold and the results read.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,12 +13,43 @@
 
 namespace walkers {
 
+// Where an individual came from: its parents in the run, or the learner that
+// proposed it, and what the GA's rules did to it on admission (AdmitChildren).
+// Files spell it as text (evaluations.csv's `parents` column, the archive's
+// "parents"): "" for the initial individual, "g/c" for a mutant of individual
+// g/c, "g/c+g/c" for a crossover child, the learner's name for another
+// learner's child ("cmaes"); then " clamped" for each time it was clamped
+// into its bounds and " redrawn" for each time it was drawn again, in order.
+struct Lineage {
+  struct Parent {
+    int generation = 0;
+    int child = 0;
+    bool operator==(const Parent& o) const { return generation == o.generation && child == o.child; }
+  };
+  enum class Admission { kClamped, kRedrawn };
+
+  std::vector<Parent> parents;        // none, one (a mutant) or two (a crossover child)
+  std::string learner;                // the learner that proposed it, when it names no parents
+  std::vector<Admission> admissions;  // what the GA's rules did, in order
+
+  static Lineage Of(std::vector<Parent> parents) { return {std::move(parents), "", {}}; }
+  static Lineage ProposedBy(std::string learner) { return {{}, std::move(learner), {}}; }
+
+  // The text files hold.
+  std::string Text() const;
+  // A lineage's text back (Text() of it is `text`); nothing for text that is
+  // not one.
+  static std::optional<Lineage> FromText(const std::string& text);
+
+  bool operator==(const Lineage& o) const {
+    return parents == o.parents && learner == o.learner && admissions == o.admissions;
+  }
+};
+
 struct Individual {
   int generation = 0;
   int child = 0;
-  // "" for the default genome, "g/c" for a mutant, "g/c+g/c" for a crossover
-  // child; another learner's children name the learner ("cmaes")
-  std::string parents;
+  Lineage lineage;
   Genome genome;
   EvaluationResult result;
 

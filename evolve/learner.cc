@@ -48,7 +48,7 @@ GeneBounds ChildGeneBounds(int gene, double body_ceiling) {
 
 void Learner::Redraw(const BreedingInputs& in, const Genome& proposal, Random* rng, Individual* child) {
   child->genome = Mutate(proposal, in.body_ceiling, in.rules, rng);
-  child->parents += " redrawn";
+  child->lineage.admissions.push_back(Lineage::Admission::kRedrawn);
 }
 
 nlohmann::json Learner::State() const { return nullptr; }
@@ -66,7 +66,9 @@ void AdmitChildren(Learner& learner, const BreedingInputs& in, std::vector<Indiv
     // the initial individual is evaluated as it is, whatever the scaffold's
     // ceiling (the authors' generation 0 holds the default genome itself)
     const bool is_initial = in.generation == 0 && child.genome.genes == initial.genes;
-    if (!is_initial && ClampIntoBounds(in.body_ceiling, &child.genome)) child.parents += " clamped";
+    if (!is_initial && ClampIntoBounds(in.body_ceiling, &child.genome)) {
+      child.lineage.admissions.push_back(Lineage::Admission::kClamped);
+    }
     if (seen->insert(KeyOf(child.genome)).second) continue;
     // a genome seen before: drawn again, from the child's own stream of redraws
     const Individual proposal = child;
@@ -76,7 +78,9 @@ void AdmitChildren(Learner& learner, const BreedingInputs& in, std::vector<Indiv
       child = proposal;
       learner.Redraw(in, proposal.genome, &rng, &child);
       RequireFinite(learner_name, child);
-      if (ClampIntoBounds(in.body_ceiling, &child.genome)) child.parents += " clamped";
+      if (ClampIntoBounds(in.body_ceiling, &child.genome)) {
+        child.lineage.admissions.push_back(Lineage::Admission::kClamped);
+      }
       found = seen->insert(KeyOf(child.genome)).second;
     }
     if (!found) {

@@ -70,16 +70,16 @@ class Learner {
 
   // The children of generation in.generation, in order (generation and child
   // set), not yet evaluated: each one's genome and where it came from
-  // (Individual::parents). `archive` is the run's all-time fittest so far
+  // (Individual::lineage). `archive` is the run's all-time fittest so far
   // (empty before generation 0). The run then applies the GA's rules to them
   // (AdmitChildren).
   virtual std::vector<Individual> Propose(const BreedingInputs& in, const Archive& archive) = 0;
 
-  // `child` (its generation, number and parents set) drawn again, because
+  // `child` (its generation, number and lineage set) drawn again, because
   // `proposal`, its genome, was seen before. By default, as the GA draws a
   // child again: a mutant of the proposal, from `rng`, the child's own stream
-  // of redraws (continued from one redraw to the next); its parents say
-  // "redrawn".
+  // of redraws (continued from one redraw to the next); its lineage adds
+  // kRedrawn.
   virtual void Redraw(const BreedingInputs& in, const Genome& proposal, Random* rng, Individual* child);
 
   // The generation's children as the run evaluated them (after AdmitChildren),

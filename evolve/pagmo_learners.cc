@@ -168,7 +168,7 @@ class PagmoLearner : public Learner {
     for (std::size_t c = 0; c < children.size(); ++c) {
       children[c].generation = in.generation;
       children[c].child = static_cast<int>(c);
-      children[c].parents = spec().name;
+      children[c].lineage = Lineage::ProposedBy(spec().name);
       children[c].genome = DefaultGenome();
       for (int k = 0; k < kNumGenes; ++k) children[c].genome.genes[k] = proposals_[c][k];
     }

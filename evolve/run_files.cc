@@ -4,6 +4,7 @@
 #include <set>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -36,7 +37,7 @@ constexpr int kCheckpointFormat = 1;
 
 std::string EvaluationRow(const Individual& ind) {
   std::ostringstream row;
-  row << ind.generation << ',' << ind.child << ',' << ind.parents;
+  row << ind.generation << ',' << ind.child << ',' << ind.lineage.Text();
   for (double g : ind.genome.genes) row << ',' << FormatExact(g);
   const EvaluationResult& r = ind.result;
   row << ',' << FormatExact(r.fitness) << ',' << FormatExact(r.distance) << ',' << (r.fell ? 1 : 0) << ','
@@ -62,7 +63,7 @@ json IndividualToJson(const Individual& ind) {
   return {{"id", ind.id()},
           {"generation", ind.generation},
           {"child", ind.child},
-          {"parents", ind.parents},
+          {"parents", ind.lineage.Text()},
           {"fitness", r.fitness},
           {"distance", r.distance},
           {"fell", r.fell},
@@ -115,7 +116,13 @@ Individual IndividualFromJson(const JsonFields& f, int generations, int populati
   ind.generation = static_cast<int>(f.Integer("generation", 0, generations - 1));
   ind.child = static_cast<int>(f.Integer("child", 0, population - 1));
   if (f.String("id") != ind.id()) f.Fail("id", "is not \"" + ind.id() + "\", its generation and child");
-  ind.parents = f.String("parents");
+  const std::optional<Lineage> lineage = Lineage::FromText(f.String("parents"));
+  if (!lineage) {
+    f.Fail("parents", "= " + f.Get("parents").dump() +
+                          " is not a lineage: \"\", \"g/c\", \"g/c+g/c\" or a learner's name, then \" clamped\" or "
+                          "\" redrawn\" any number of times");
+  }
+  ind.lineage = *lineage;
   ind.genome = GenomeFromJson(f.Get("genome"), f.source() + ": " + f.Name("genome"));
   EvaluationResult& r = ind.result;
   r.fitness = f.Number("fitness");

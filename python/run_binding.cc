@@ -80,7 +80,7 @@ class PythonRun {
       const Individual& child = evaluated.children[c];
       std::copy(child.genome.genes.begin(), child.genome.genes.end(), genes.mutable_data(c, 0));
       results.push_back(child.result);
-      lineages.append(child.parents);
+      lineages.append(child.lineage.Text());
     }
     py::dict arrays = ResultArrays(results);
     arrays["parents"] = lineages;

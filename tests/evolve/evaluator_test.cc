@@ -92,13 +92,16 @@ TEST(ExpectedCostTest, IsTheCostliestParentInTheArchive) {
   members[2].result.cvode_steps = 300;
   archive.Merge(members);
   Individual child = WithFitness(4, 0, -1.0);
-  child.parents = "2/0+3/5";
+  child.lineage = Lineage::Of({{2, 0}, {3, 5}});
   EXPECT_EQ(ExpectedCost(child, archive), 300.0);
-  child.parents = "2/1";
+  child.lineage = Lineage::Of({{2, 1}});
   EXPECT_EQ(ExpectedCost(child, archive), 900.0);
-  for (const char* unknown : {"", "cmaes", "7/7"}) {
-    child.parents = unknown;
-    EXPECT_EQ(ExpectedCost(child, archive), 0.0) << unknown;
+  // drawn again: a mutant of the proposal, still its parent's child
+  child.lineage.admissions.push_back(Lineage::Admission::kRedrawn);
+  EXPECT_EQ(ExpectedCost(child, archive), 900.0);
+  for (const Lineage& unknown : {Lineage{}, Lineage::ProposedBy("cmaes"), Lineage::Of({{7, 7}})}) {
+    child.lineage = unknown;
+    EXPECT_EQ(ExpectedCost(child, archive), 0.0) << unknown.Text();
   }
 }
 

@@ -28,9 +28,9 @@ TEST_F(BreedTest, GenerationZeroIsTheDefaultAndItsMutants) {
   const std::vector<Individual> children = Breed(config_, {1, 0, 0.9, rules_}, Archive(16), &seen);
   ASSERT_EQ(children.size(), 16u);
   EXPECT_EQ(children[0].genome.genes, DefaultGenome().genes);
-  EXPECT_EQ(children[0].parents, "");
+  EXPECT_EQ(children[0].lineage.Text(), "");
   for (int c = 1; c < 16; ++c) {
-    EXPECT_EQ(children[c].parents, "0/0");
+    EXPECT_EQ(children[c].lineage.Text(), "0/0");
     EXPECT_NE(children[c].genome.genes, DefaultGenome().genes);
   }
   EXPECT_EQ(seen.size(), 16u);
@@ -50,7 +50,7 @@ TEST_F(BreedTest, ChildrenComeFromTheirOwnStreamsAndCrossoverIsTheMeanBeforeMuta
   };
   for (int c = 0; c < 16; ++c) {
     Random rng(9, g, c);
-    const std::string& p = children[c].parents;
+    const std::string p = children[c].lineage.Text();
     Genome expected;
     if (c < config_.mutation_children) {
       ASSERT_EQ(p.find('+'), std::string::npos);
@@ -65,7 +65,7 @@ TEST_F(BreedTest, ChildrenComeFromTheirOwnStreamsAndCrossoverIsTheMeanBeforeMuta
   }
   // the ten mutation parents are distinct: drawn from one shuffle without replacement
   std::set<std::string> mutation_parents;
-  for (int c = 0; c < 10; ++c) mutation_parents.insert(children[c].parents);
+  for (int c = 0; c < 10; ++c) mutation_parents.insert(children[c].lineage.Text());
   EXPECT_EQ(mutation_parents.size(), 10u);
 }
 
@@ -78,12 +78,12 @@ TEST_F(BreedTest, ADuplicateIsDrawnAgain) {
   std::set<GenomeKey> seen = {KeyOf(first[0].genome)};
   const std::vector<Individual> again = Breed(config_, {5, 7, 0.9, rules_}, archive, &seen);
   EXPECT_NE(KeyOf(again[0].genome), KeyOf(first[0].genome));
-  EXPECT_EQ(again[0].parents, first[0].parents);
+  EXPECT_EQ(again[0].lineage.Text(), first[0].lineage.Text());
   // it is the second draw of the same stream
   Random rng(5, 7, 0);
   const Genome& p = [&]() -> const Genome& {
     for (const Individual& m : archive.members()) {
-      if (m.id() == first[0].parents) return m.genome;
+      if (m.id() == first[0].lineage.Text()) return m.genome;
     }
     throw std::runtime_error("parent");
   }();

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -40,6 +43,33 @@ TEST(ArchiveTest, EqualFitnessKeepsTheOlderIndividual) {
   archive.Merge({WithFitness(1, 0, 5.0), WithFitness(1, 1, 5.0)});
   EXPECT_EQ(archive.members()[0].id(), "0/0");
   EXPECT_EQ(archive.members()[1].id(), "1/0");
+}
+
+// A lineage is written as evaluations.csv's `parents` column and the
+// archive's "parents" have always spelt it, and read back to the same value.
+TEST(LineageTest, ItsTextIsTheFilesAndReadsBackTheSame) {
+  using A = Lineage::Admission;
+  const std::pair<Lineage, std::string> cases[] = {
+      {Lineage{}, ""},
+      {Lineage::Of({{0, 0}}), "0/0"},
+      {Lineage::Of({{12, 3}, {7, 15}}), "12/3+7/15"},
+      {Lineage::ProposedBy("cmaes"), "cmaes"},
+      {Lineage{{}, "external", {A::kClamped}}, "external clamped"},
+      {Lineage{{{4, 2}}, "", {A::kRedrawn}}, "4/2 redrawn"},
+      {Lineage{{}, "external", {A::kClamped, A::kRedrawn, A::kClamped}}, "external clamped redrawn clamped"},
+  };
+  for (const auto& [lineage, text] : cases) {
+    EXPECT_EQ(lineage.Text(), text);
+    const std::optional<Lineage> back = Lineage::FromText(text);
+    ASSERT_TRUE(back.has_value()) << text;
+    EXPECT_EQ(*back, lineage) << text;
+  }
+}
+
+TEST(LineageTest, TextThatIsNoLineageIsRefused) {
+  for (const char* text : {"1/2+", "1/2/3", "+1/2", "01/2", "1/2 clamp", "cmaes  redrawn", "x redrawn ", "1/99999999999"}) {
+    EXPECT_FALSE(Lineage::FromText(text).has_value()) << text;
+  }
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ class FixedLearner : public Learner {
     for (std::size_t c = 0; c < children.size(); ++c) {
       children[c].generation = in.generation;
       children[c].child = static_cast<int>(c);
-      children[c].parents = "fixed";
+      children[c].lineage = Lineage::ProposedBy("fixed");
       children[c].genome = genomes_[c];
     }
     return children;
@@ -92,7 +92,7 @@ TEST(AdmitChildrenTest, AGeneOutsideItsBoundsIsClampedIntoThem) {
   EXPECT_EQ(g[kKStep], GeneTable()[kKStep].ceiling);
   EXPECT_EQ(g[kFemurLength], GeneTable()[kFemurLength].floor);
   EXPECT_EQ(g[kKx], 1.0) << "a gene within its bounds is kept";
-  EXPECT_EQ(children[0].parents, "fixed clamped");
+  EXPECT_EQ(children[0].lineage.Text(), "fixed clamped");
   EXPECT_EQ(seen.count(KeyOf(g)), 1u);
 }
 
@@ -115,9 +115,9 @@ TEST(AdmitChildrenTest, ADuplicateIsDrawnAgainFromTheChildsOwnStreamUntilItIsNew
   const BreedingInputs in{7, 3, 0.9, kRules};
   const std::vector<Individual> children = Admitted({a, a_again, earlier}, in, &seen);
   EXPECT_EQ(children[0].genome.genes, a.genes);
-  EXPECT_EQ(children[0].parents, "fixed");
+  EXPECT_EQ(children[0].lineage.Text(), "fixed");
   for (int c : {1, 2}) {
-    EXPECT_EQ(children[c].parents, "fixed redrawn") << c;
+    EXPECT_EQ(children[c].lineage.Text(), "fixed redrawn") << c;
     EXPECT_NE(KeyOf(children[c].genome), KeyOf(a)) << c;
     EXPECT_NE(KeyOf(children[c].genome), KeyOf(earlier)) << c;
   }

@@ -134,7 +134,7 @@ TEST_P(EveryLearnerTest, ARestoredStateProposesBitForBitWhatTheUninterruptedLear
   for (int g = 7; g < 14; ++g) {
     for (int c = 0; c < 16; ++c) {
       EXPECT_EQ(resumed.evaluated[g - 7][c].genome.genes, whole.evaluated[g][c].genome.genes) << g << "/" << c;
-      EXPECT_EQ(resumed.evaluated[g - 7][c].parents, whole.evaluated[g][c].parents) << g << "/" << c;
+      EXPECT_EQ(resumed.evaluated[g - 7][c].lineage, whole.evaluated[g][c].lineage) << g << "/" << c;
     }
   }
   if (!whole.learner->KeepsState()) return;

@@ -345,6 +345,14 @@ TEST_F(CheckpointTest, AnArchiveGenomeOutOfRangeIsRefusedNamingIt) {
   ExpectRefusedNaming("checkpoint.json", "archive[0].genome: unknown gene 'x'");
 }
 
+TEST_F(CheckpointTest, AnArchiveMembersLineageThatIsNoneIsRefusedNamingIt) {
+  EditFile(Checkpoint(), [](std::string* t) {
+    const std::size_t at = t->find("\"parents\":\"");
+    t->replace(at, 11, "\"parents\":\"0/0 mutated");
+  });
+  ExpectRefusedNaming("checkpoint.json", "field 'archive[0].parents' = \"0/0 mutated");
+}
+
 TEST_F(CheckpointTest, CsvFilesThatDisagreeWithTheCheckpointAreRefused) {
   // a gene of row 3 is no number
   EditFile(RunFiles(Dir("a")).evaluations, [](std::string* t) {
