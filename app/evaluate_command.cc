@@ -22,6 +22,7 @@
 #include "dynamics/observation.h"
 #include "evolve/finals.h"  // kMaxEnsemble
 #include "files/durable_file.h"
+#include "files/errors.h"
 
 namespace walkers::app {
 namespace {
@@ -47,7 +48,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
     for (size_t j = 0; j < i; ++j) {
       const auto same = std::filesystem::path(outputs[i].second).lexically_normal() ==
                         std::filesystem::path(outputs[j].second).lexically_normal();
-      if (same) throw std::invalid_argument(outputs[j].first + " and " + outputs[i].first + " name the same file");
+      if (same) throw InputError(outputs[j].first + " and " + outputs[i].first + " name the same file");
     }
   }
   const Genome genome = LoadGenome(opt.genome_path);

@@ -2,7 +2,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <stdexcept>
 
 #include "app/commands.h"
 #include "app/validators.h"
@@ -10,6 +9,7 @@
 #include "control/genome.h"
 #include "control/walk_record.h"
 #include "files/durable_file.h"
+#include "files/errors.h"
 
 namespace walkers::app {
 namespace {
@@ -24,7 +24,7 @@ struct ReplayOptions {
 int RunReplay(const ReplayOptions& opt) {
   const std::string extension = std::filesystem::path(opt.out).extension().string();
   if (extension != ".html" && extension != ".svg") {
-    throw std::invalid_argument("--out " + opt.out + ": the file must end in .html (animation) or .svg (filmstrip)");
+    throw InputError("--out " + opt.out + ": the file must end in .html (animation) or .svg (filmstrip)");
   }
   CheckOutputFile("--out", opt.out, opt.force, {{"--genome", opt.genome_path}});
   const Genome genome = LoadGenome(opt.genome_path);

@@ -16,6 +16,7 @@
 #include "app/statistics.h"
 #include "app/validators.h"
 #include "evolve/reproduction.h"
+#include "files/errors.h"
 
 namespace walkers::app {
 namespace {
@@ -48,8 +49,8 @@ int RunReproduce(const ReproduceOptions& opt) {
   if (!opt.authors_checkout.empty()) {
     authors = {"--authors", opt.authors_checkout};
     if (RunStatistics({"authors", opt.authors_checkout}) != 0) {
-      throw std::runtime_error("--authors-checkout " + opt.authors_checkout +
-                               ": the statistics cannot read the authors' runs there (see above)");
+      throw InputError("--authors-checkout " + opt.authors_checkout +
+                       ": the statistics cannot read the authors' runs there (see above)");
     }
   }
   const std::unique_ptr<Evaluator> evaluator = MakeEvaluator(opt.evaluator);

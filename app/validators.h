@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "files/errors.h"
 #include "files/number_text.h"
 #include "evolve/run.h"
 
@@ -55,7 +56,7 @@ inline CLI::Validator IntegerRange(long long lo, long long hi) {
 // --preset: where the paper and the authors' program differ (control/preset.h)
 inline CLI::Option* AddPresetOption(CLI::App* sub, std::string* preset) {
   return sub->add_option("--preset", *preset, "Where the paper and the authors' program differ")
-      ->check(CLI::IsMember({"paper", "original"}))
+      ->check(CLI::IsMember(PresetNames()))
       ->capture_default_str();
 }
 
@@ -96,20 +97,19 @@ inline void AddStartFlags(CLI::App* sub, StartFlags* flags, const std::string& w
 
 // An output file (option `option`, path `path`): refused if it is one of the
 // command's `inputs` (option, path) whatever --force says, or if it exists
-// and `force` is not set. Throws std::invalid_argument naming the option.
+// and `force` is not set. Throws InputError naming the option.
 inline void CheckOutputFile(const std::string& option, const std::string& path, bool force,
                             const std::vector<std::pair<std::string, std::string>>& inputs) {
   namespace fs = std::filesystem;
   std::error_code ec;
   for (const auto& [input_option, input] : inputs) {
     if (fs::equivalent(path, input, ec)) {
-      throw std::invalid_argument(option + " " + path + " is the " + input_option +
-                                  " file; an output never replaces an input");
+      throw InputError(option + " " + path + " is the " + input_option + " file; an output never replaces an input");
     }
   }
-  if (fs::is_directory(path)) throw std::invalid_argument(option + " " + path + " is a directory");
+  if (fs::is_directory(path)) throw InputError(option + " " + path + " is a directory");
   if (fs::exists(fs::symlink_status(path)) && !force) {
-    throw std::invalid_argument(option + " " + path + " exists; pass --force to replace it");
+    throw InputError(option + " " + path + " exists; pass --force to replace it");
   }
 }
 

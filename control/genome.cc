@@ -8,7 +8,8 @@
 namespace walkers {
 namespace {
 
-// MODEL.md §1: name, default, floor, ceiling; sigma = default / divisor
+// paper Table 1 (docs/model.md, "Genome"): name, default, floor, ceiling;
+// sigma = default / divisor
 struct GeneRow {
   const char* name;
   double default_value, floor, ceiling, sigma_divisor;
@@ -90,34 +91,24 @@ nlohmann::json GenomeToJson(const Genome& genome) {
 }
 
 Genome GenomeFromJson(const nlohmann::json& json, const std::string& source) {
-  if (!json.is_object()) throw GenomeError(source + ": a genome must be a JSON object of gene names to numbers");
-  try {
-    const JsonFields genes(json, source, "", "gene");
-    // every key must be a known gene or mass
-    std::vector<std::string> known;
-    for (const GeneSpec& spec : GeneTable()) known.push_back(spec.name);
-    for (const MassKey& m : kMassKeys) known.push_back(m.name);
-    genes.RequireOnly(known);
+  if (!json.is_object()) throw InputError(source + ": a genome must be a JSON object of gene names to numbers");
+  const JsonFields genes(json, source, "", "gene");
+  // every key must be a known gene or mass
+  std::vector<std::string> known;
+  for (const GeneSpec& spec : GeneTable()) known.push_back(spec.name);
+  for (const MassKey& m : kMassKeys) known.push_back(m.name);
+  genes.RequireOnly(known);
 
-    Genome genome;
-    for (int i = 0; i < kNumGenes; ++i) {
-      const GeneSpec& spec = GeneTable()[i];
-      genome.genes[i] = genes.Number(spec.name, {i == kHalfBodyX ? kMinFileHalfBodyX : spec.floor, spec.ceiling});
-    }
-    for (const MassKey& m : kMassKeys) genome.*m.field = genes.Number(m.name, kMassRange);
-    return genome;
-  } catch (const InputError& e) {
-    throw GenomeError(e.what());
+  Genome genome;
+  for (int i = 0; i < kNumGenes; ++i) {
+    const GeneSpec& spec = GeneTable()[i];
+    genome.genes[i] = genes.Number(spec.name, {i == kHalfBodyX ? kMinFileHalfBodyX : spec.floor, spec.ceiling});
   }
+  for (const MassKey& m : kMassKeys) genome.*m.field = genes.Number(m.name, kMassRange);
+  return genome;
 }
 
-Genome LoadGenome(const std::string& path) {
-  try {
-    return GenomeFromJson(LoadJsonFile(path), path);
-  } catch (const InputError& e) {
-    throw GenomeError(e.what());
-  }
-}
+Genome LoadGenome(const std::string& path) { return GenomeFromJson(LoadJsonFile(path), path); }
 
 void SaveGenome(const Genome& genome, const std::string& path) {
   WriteFileAtomically(path, GenomeToJson(genome).dump(2) + "\n");

@@ -1,9 +1,9 @@
 // One individual: the 18 evolved genes of paper Table 1 and three fixed point
-// masses (MODEL.md §1), with their bounds, JSON files and validation.
+// masses (docs/model.md, "Genome"), with their bounds, JSON files and
+// validation.
 #pragma once
 
 #include <array>
-#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -45,7 +45,8 @@ struct GeneSpec {
 const std::array<GeneSpec, kNumGenes>& GeneTable();
 
 // Genome files accept halfBodyX down to this, below its mutation floor: the
-// authors' case-3 formula left evolved genomes at 0.033–0.044 (MODEL.md §1).
+// authors' case-3 formula left evolved genomes at 0.033–0.044 (docs/model.md,
+// "Genome").
 constexpr double kMinFileHalfBodyX = 0.01;
 
 struct Genome {
@@ -65,16 +66,10 @@ Genome DefaultGenome();
 // The physical sizes the dynamics needs.
 BodyParameters BodyOf(const Genome& genome);
 
-// A genome file or value that is not valid. The message names the source,
-// the gene, the value and the allowed range.
-class GenomeError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 // JSON object whose keys are exactly the gene and mass names.
 nlohmann::json GenomeToJson(const Genome& genome);
-// Validates every key and value; `source` names the file in error messages.
+// Validates every key and value: InputError (files/errors.h) naming `source`,
+// the gene, the value and the allowed range.
 Genome GenomeFromJson(const nlohmann::json& json, const std::string& source);
 
 // Parses the file strictly (files/input_file.h: a key given twice is

@@ -1,6 +1,6 @@
 #include "control/preset.h"
 
-#include <stdexcept>
+#include "files/input_file.h"
 
 namespace walkers {
 
@@ -24,10 +24,13 @@ Preset OriginalPreset() {
   return p;
 }
 
+std::vector<std::string> PresetNames() { return {PaperPreset().name, OriginalPreset().name}; }
+
 Preset PresetByName(const std::string& name) {
-  if (name == "paper") return PaperPreset();
-  if (name == "original") return OriginalPreset();
-  throw std::invalid_argument("unknown preset '" + name + "': allowed values are paper, original");
+  for (const Preset& preset : {PaperPreset(), OriginalPreset()}) {
+    if (name == preset.name) return preset;
+  }
+  FailUnknownName("preset", name, PresetNames());
 }
 
 }  // namespace walkers

@@ -1,8 +1,9 @@
-// The two presets of MODEL.md §6: where the paper's text and the authors'
-// program differ, as named switches in one value.
+// The two presets (docs/model.md, "Presets"): where the paper's text and the
+// authors' program differ, as named switches in one value.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace walkers {
 
@@ -12,7 +13,8 @@ enum class StableRule {
   kSignedRatesAndTrunkMotion,  // authors: every joint rate (signed) and the trunk's x' + y' (signed) below it
 };
 
-// The performance-based scaffold's ceiling for halfBodyX (MODEL.md §5).
+// The performance-based scaffold's ceiling for halfBodyX (docs/model.md,
+// "Scaffolds").
 enum class PerformanceCeiling {
   kPaperEq8,          // max(0.9 - 0.2 Ave / InitF, 0.05)
   kAuthorsFormula,    // max(0.9 InitF / Ave - 0.2, 0), clamped ceiling-first, never below 0.01
@@ -36,7 +38,10 @@ struct Preset {
 Preset PaperPreset();
 Preset OriginalPreset();  // the default
 
-// "paper" or "original"; throws std::invalid_argument naming the allowed values.
+// The presets' names: "paper", "original".
+std::vector<std::string> PresetNames();
+// PresetNames()'s preset; throws InputError (files/errors.h) naming the
+// allowed values.
 Preset PresetByName(const std::string& name);
 
 }  // namespace walkers

@@ -1,4 +1,5 @@
-// How every simulation of the walker starts (MODEL.md §4).
+// How every simulation of the walker starts (docs/model.md, "Coordinates and
+// conventions": the start pose).
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,6 @@
 // Virtual model control of a stance leg and the swing leg (paper §2.2,
-// eqs. 1–5, in the chain convention of MODEL.md §4).
+// eqs. 1–5, in the chain convention of docs/model.md, "Coordinates and
+// conventions"; the authors' choices in "Controller").
 #pragma once
 
 #include "control/genome.h"
@@ -32,7 +33,8 @@ struct TrunkMotion {
 };
 
 // Height of the trunk centre the vertical spring pulls to: the authors'
-// target L - halfBodyY - halfFootY - offset, reproduced as is (MODEL.md §4).
+// target L - halfBodyY - halfFootY - offset, reproduced as is (docs/model.md,
+// "Controller").
 double TargetHeight(const Genome& g, SupportPhase phase);
 
 // paper eq. (4) with the authors' targets: the virtual force (F_x, F_y, F_theta)

@@ -1,6 +1,7 @@
-// The walking state machine of paper §2.3 / MODEL.md §4: double support, left
-// support, right support; virtual model control of the stance legs, the swing
-// hip spring, and planting and unplanting feet through the dynamics' welds.
+// The walking state machine of paper §2.3 (docs/model.md, "Controller"):
+// double support, left support, right support; virtual model control of the
+// stance legs, the swing hip spring, and planting and unplanting feet through
+// the dynamics' welds.
 // It runs at 30 Hz; its torques are held between ticks.
 #pragma once
 

@@ -1,6 +1,5 @@
 #include "evolve/external_learner.h"
 
-#include <stdexcept>
 #include <string>
 
 #include "evolve/genetic_algorithm.h"
@@ -24,9 +23,9 @@ std::vector<Individual> ExternalLearner::Children(const BreedingInputs& in, cons
 }
 
 std::vector<Individual> ExternalLearner::Propose(const BreedingInputs& in, const Archive&) {
-  throw std::runtime_error("generation " + std::to_string(in.generation) + ": the learner " + spec().name +
-                           " proposes from a program outside walkers; drive its run with the Python module's "
-                           "walkers.Run (docs/python.md)");
+  throw InputError("generation " + std::to_string(in.generation) + ": the learner " + spec().name +
+                   " proposes from a program outside walkers; drive its run with the Python module's walkers.Run "
+                   "(docs/python.md)");
 }
 
 nlohmann::json ExternalLearner::StateOf(const nlohmann::json& program_state) { return {{"state", program_state}}; }

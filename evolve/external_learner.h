@@ -30,8 +30,8 @@ class ExternalLearner : public Learner {
   // there are not as many genomes as children.
   std::vector<Individual> Children(const BreedingInputs& in, const std::vector<Genome>& genomes) const;
 
-  // Throws std::runtime_error: the outside program proposes, through the
-  // Python module's walkers.Run, never the run's own loop (EvolutionRun::Run).
+  // Throws InputError: the outside program proposes, through the Python
+  // module's walkers.Run, never the run's own loop (EvolutionRun::Run).
   std::vector<Individual> Propose(const BreedingInputs& in, const Archive& archive) override;
   void Tell(const BreedingInputs&, const std::vector<Individual>&) override {}
 

@@ -77,9 +77,9 @@ bool KeptWithoutEvaluations(const std::string& dir, const RunConfig& config) {
   RequireResumableAs(stored, config, files.config);  // a longer run asked for is refused below, by name
   const Checkpoint cp = ParseCheckpoint(ReadFile(files.checkpoint), stored, files.checkpoint);
   if (cp.completed_generations != config.generations) {
-    throw std::runtime_error(files.dir + ": the run has " + std::to_string(cp.completed_generations) + " of " +
-                             std::to_string(config.generations) +
-                             " generations and no evaluations.csv: it cannot be continued without them");
+    throw InputError(files.dir + ": the run has " + std::to_string(cp.completed_generations) + " of " +
+                     std::to_string(config.generations) +
+                     " generations and no evaluations.csv: it cannot be continued without them");
   }
   return true;
 }
@@ -118,9 +118,9 @@ RunFinals LoadRunFinals(const std::string& dir, const RunConfig& config) {
   }
   for (std::size_t g = 0; g < per_generation.size(); ++g) {
     if (per_generation[g] != config.ga.population) {
-      throw std::runtime_error(files.evaluations + ": generation " + std::to_string(g) + " has " +
-                               std::to_string(per_generation[g]) + " evaluations, not the population's " +
-                               std::to_string(config.ga.population));
+      throw InputError(files.evaluations + ": generation " + std::to_string(g) + " has " +
+                       std::to_string(per_generation[g]) + " evaluations, not the population's " +
+                       std::to_string(config.ga.population));
     }
   }
   return finals;
@@ -129,34 +129,32 @@ RunFinals LoadRunFinals(const std::string& dir, const RunConfig& config) {
 RescoreCache::RescoreCache(std::string path, const Preset& preset, const EvaluationSettings& settings, int size)
     : path_(std::move(path)), preset_(preset), settings_(settings), size_(size) {
   if (!std::filesystem::exists(path_)) return;
-  try {
-    const json j = LoadJsonFile(path_);
-    const JsonFields f(j, path_);
-    f.RequireOnly({"preset", "evaluation", "ensemble", "genomes"});
-    // another preset, other settings or another size: none of its ensembles is of use
-    if (f.String("preset") != preset_.name || f.Get("evaluation") != EvaluationSettingsToJson(settings_) ||
-        f.Integer("ensemble", 1, kMaxEnsemble) != size_) {
-      return;
+  // its messages say what it is, and how to do without it
+  const std::string source = path_ + " (a cache of re-scores: remove it to evaluate them again)";
+  const json j = ParseJson(ReadFile(path_), source);
+  const JsonFields f(j, source);
+  f.RequireOnly({"preset", "evaluation", "ensemble", "genomes"});
+  // another preset, other settings or another size: none of its ensembles is of use
+  if (f.String("preset") != preset_.name || f.Get("evaluation") != EvaluationSettingsToJson(settings_) ||
+      f.Integer("ensemble", 1, kMaxEnsemble) != size_) {
+    return;
+  }
+  const json& genomes = f.Array("genomes");
+  for (std::size_t i = 0; i < genomes.size(); ++i) {
+    const JsonFields e(genomes[i], source, "genomes[" + std::to_string(i) + "].");
+    e.RequireOnly({"genome", "fitness", "bipeds", "tripods", "falls"});
+    const Genome genome = GenomeFromJson(e.Get("genome"), source + ": " + e.Name("genome"));
+    FitnessEnsemble ensemble;
+    const json& fitness = e.Array("fitness");
+    if (fitness.size() != static_cast<std::size_t>(size_)) e.Fail("fitness", "does not hold " + std::to_string(size_) + " members");
+    for (const json& x : fitness) {
+      if (!x.is_number() || !std::isfinite(x.get<double>())) e.Fail("fitness", "holds a member that is not a finite number");
+      ensemble.fitness.push_back(x.get<double>());
     }
-    const json& genomes = f.Array("genomes");
-    for (std::size_t i = 0; i < genomes.size(); ++i) {
-      const JsonFields e(genomes[i], path_, "genomes[" + std::to_string(i) + "].");
-      e.RequireOnly({"genome", "fitness", "bipeds", "tripods", "falls"});
-      const Genome genome = GenomeFromJson(e.Get("genome"), path_ + ": " + e.Name("genome"));
-      FitnessEnsemble ensemble;
-      const json& fitness = e.Array("fitness");
-      if (fitness.size() != static_cast<std::size_t>(size_)) e.Fail("fitness", "does not hold " + std::to_string(size_) + " members");
-      for (const json& x : fitness) {
-        if (!x.is_number() || !std::isfinite(x.get<double>())) e.Fail("fitness", "holds a member that is not a finite number");
-        ensemble.fitness.push_back(x.get<double>());
-      }
-      ensemble.bipeds = static_cast<int>(e.Integer("bipeds", 0, size_));
-      ensemble.tripods = static_cast<int>(e.Integer("tripods", 0, size_));
-      ensemble.falls = static_cast<int>(e.Integer("falls", 0, size_));
-      entries_[KeyOf(genome)] = {genome, ensemble};
-    }
-  } catch (const InputError& e) {
-    throw std::runtime_error(std::string(e.what()) + " (a cache of re-scores: remove it to evaluate them again)");
+    ensemble.bipeds = static_cast<int>(e.Integer("bipeds", 0, size_));
+    ensemble.tripods = static_cast<int>(e.Integer("tripods", 0, size_));
+    ensemble.falls = static_cast<int>(e.Integer("falls", 0, size_));
+    entries_[KeyOf(genome)] = {genome, ensemble};
   }
 }
 

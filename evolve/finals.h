@@ -36,7 +36,7 @@ struct RunFinals {
 // of children: the statistics count a run's evaluations as population x
 // generations. A finished run kept without its evaluations.csv (committed
 // results leave the per-evaluation data out) is read from DIR/finals.json,
-// which WriteRunFinals wrote. Throws std::runtime_error naming the file.
+// which WriteRunFinals wrote. Throws InputError naming the file.
 RunFinals LoadRunFinals(const std::string& dir, const RunConfig& config);
 
 // Writes DIR/finals.json: the finished run's best biped and best tripod, read
@@ -45,7 +45,7 @@ void WriteRunFinals(const std::string& dir, const RunConfig& config, const RunFi
 
 // Whether DIR holds a finished run kept without its evaluations.csv (and with
 // its finals.json): a run whose statistics can be made, but which cannot be
-// continued. Throws std::runtime_error naming the file when the run's
+// continued. Throws InputError naming the file when the run's
 // config.json is not `config`, or when it has not finished `config`'s
 // generations.
 bool KeptWithoutEvaluations(const std::string& dir, const RunConfig& config);
@@ -57,7 +57,8 @@ class RescoreCache {
  public:
   // Reads `path` when it exists and holds ensembles of the same preset,
   // settings and size; else (or when absent) starts empty. Throws
-  // std::runtime_error naming the file and the field when it is malformed.
+  // InputError naming the file, the field and how to do without the file
+  // when it is malformed.
   RescoreCache(std::string path, const Preset& preset, const EvaluationSettings& settings, int size);
 
   // the ensemble of a genome; nullptr when it has none

@@ -3,6 +3,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "files/errors.h"
 #include "files/input_file.h"
 
 namespace walkers {
@@ -32,11 +33,11 @@ class ParentDraw {
 
 }  // namespace
 
-void GeneticAlgorithmConfig::Validate() const {
-  RequireInRange("population", population, kMinPopulation, kMaxPopulation);
-  RequireInRange("archive_size", archive_size, kMinArchive, kMaxArchive);
-  RequireInRange("mutation_children", mutation_children, 0, population);
-  RequireInRange("mutation_probability", mutation_probability, {0.0, 1.0, true});
+void GeneticAlgorithmConfig::Validate(const std::string& source) const {
+  RequireInRange(FieldOf(source, "population"), population, kMinPopulation, kMaxPopulation);
+  RequireInRange(FieldOf(source, "archive_size"), archive_size, kMinArchive, kMaxArchive);
+  RequireInRange(FieldOf(source, "mutation_children"), mutation_children, 0, population);
+  RequireInRange(FieldOf(source, "mutation_probability"), mutation_probability, {0.0, 1.0, true});
 }
 
 std::vector<Individual> GeneticAlgorithm::Propose(const BreedingInputs& in, const Archive& archive) {
@@ -66,7 +67,8 @@ std::vector<Individual> GeneticAlgorithm::Propose(const BreedingInputs& in, cons
   }
 
   const std::vector<Individual>& parents = archive.members();
-  if (parents.size() < 2) throw std::runtime_error("breeding needs an archive of at least 2 individuals");
+  WALKERS_CHECK(parents.size() >= 2, "breeding needs an archive of at least 2 individuals, not " +
+                                         std::to_string(parents.size()));
 
   // mutation children: one parent each
   ParentDraw mutation_parents(static_cast<int>(parents.size()),

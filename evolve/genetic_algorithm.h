@@ -1,11 +1,13 @@
 // The genetic algorithm of paper Algorithm 1 with the authors' settings
-// (MODEL.md §5), the default learner: children drawn from the run's all-time
-// archive by mutation and crossover, duplicates drawn again.
+// (docs/model.md, "Genetic algorithm"), the default learner: children drawn
+// from the run's all-time archive by mutation and crossover, duplicates drawn
+// again.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "evolve/individual.h"
@@ -28,8 +30,9 @@ struct GeneticAlgorithmConfig {
   int mutation_children = 10;  // per generation; the rest are crossover children
   double mutation_probability = 0.9;  // (0, 1]: at 0 every mutant would repeat its parent
 
-  // Throws std::invalid_argument naming the field and its allowed range.
-  void Validate() const;
+  // Throws InputError naming `source` (the file, when the settings come from
+  // one), the field and its allowed range.
+  void Validate(const std::string& source = "") const;
   int crossover_children() const { return population - mutation_children; }
 };
 
@@ -43,8 +46,8 @@ class GeneticAlgorithm : public Learner {
  public:
   GeneticAlgorithm(const LearnerSpec& spec, const GeneticAlgorithmConfig& config) : Learner(spec), config_(config) {}
 
-  // Generation 0: the default genome and population-1 mutants of it. Throws
-  // std::runtime_error for a later generation with an archive of fewer than two.
+  // Generation 0: the default genome and population-1 mutants of it; later
+  // generations need an archive of two or more (WALKERS_CHECK).
   std::vector<Individual> Propose(const BreedingInputs& in, const Archive& archive) override;
   // The child's next draw from its parent (or its parents' mean) and stream.
   void Redraw(const BreedingInputs& in, const Genome& proposal, Random* rng, Individual* child) override;

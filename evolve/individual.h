@@ -1,6 +1,7 @@
-// The evaluated individuals of a run and the run's all-time archive of the
-// fittest (MODEL.md §5's F): what every learner's children become once
-// evaluated, and what the performance scaffold and the results read.
+// The evaluated individuals of a run, where each came from, and the run's
+// all-time archive of the fittest (F in docs/model.md, "Genetic algorithm"):
+// what every learner's children become once evaluated, and what the
+// performance scaffold and the results read.
 #pragma once
 
 #include <optional>

@@ -6,10 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "files/input_file.h"
 #include "evolve/external_learner.h"
 #include "evolve/genetic_algorithm.h"
 #include "evolve/pagmo_learners.h"
+#include "files/errors.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace {
@@ -30,11 +31,9 @@ bool ClampIntoBounds(double body_ceiling, Genome* genome) {
 
 void RequireFinite(const std::string& learner, const Individual& child) {
   for (int k = 0; k < kNumGenes; ++k) {
-    if (!std::isfinite(child.genome.genes[k])) {
-      throw std::runtime_error("the learner " + learner + " proposed " + std::to_string(child.genome.genes[k]) +
-                               " for gene '" + GeneTable()[k].name + "' of child " + child.id() +
-                               ": a gene must be a finite number");
-    }
+    WALKERS_CHECK(std::isfinite(child.genome.genes[k]),
+                  "the learner " + learner + " proposed " + std::to_string(child.genome.genes[k]) + " for gene '" +
+                      GeneTable()[k].name + "' of child " + child.id() + ": a gene must be a finite number");
   }
 }
 
@@ -92,8 +91,9 @@ void AdmitChildren(Learner& learner, const BreedingInputs& in, std::vector<Indiv
 
 const std::vector<LearnerSpec>& Learners() {
   static const std::vector<LearnerSpec> learners = {
-      {"ga", "genetic algorithm", "tab:blue", "the paper's genetic algorithm (Algorithm 1, MODEL.md §5), the default",
-       kMinPopulation, MakeGeneticAlgorithm},
+      {"ga", "genetic algorithm", "tab:blue",
+       "the paper's genetic algorithm (Algorithm 1; docs/model.md, \"Genetic algorithm\"), the default", kMinPopulation,
+       MakeGeneticAlgorithm},
       {"cmaes", "CMA-ES", "tab:red", kCmaesAbout, kCmaesMinPopulation, MakeCmaes},
       {"sade", "self-adaptive DE", "tab:olive", kSadeAbout, kSadeMinPopulation, MakeSade},
       {"pso", "particle swarm", "tab:brown", kParticleSwarmAbout, kParticleSwarmMinPopulation, MakeParticleSwarm},
@@ -121,12 +121,10 @@ std::vector<std::string> BuiltInLearnerNames() {
 }
 
 const LearnerSpec& LearnerByName(const std::string& name) {
-  std::string allowed;
   for (const LearnerSpec& spec : Learners()) {
     if (name == spec.name) return spec;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(spec.name);
   }
-  throw std::invalid_argument("unknown learner '" + name + "': allowed values are " + allowed);
+  FailUnknownName("learner", name, LearnerNames());
 }
 
 std::unique_ptr<Learner> MakeLearner(const std::string& name, const GeneticAlgorithmConfig& ga, std::uint64_t seed) {

@@ -100,14 +100,15 @@ class Learner {
   const LearnerSpec* spec_;
 };
 
-// The GA's rules (MODEL.md §5) applied to a learner's proposals, child by
-// child in order: a gene outside its bounds (ChildGeneBounds) is clamped into
-// them, as mutation clamps (but for the initial individual, the default
-// genome in generation 0, evaluated as it is); a genome whose 3-significant-figure key was seen
-// is drawn again (Learner::Redraw) until it is new (a run that finds none in
-// 100000 draws throws); each accepted key is added to `seen`. A gene that is
-// not a finite number is the learner's error: std::runtime_error naming the
-// learner, the child and the gene.
+// The GA's rules (docs/model.md, "Genetic algorithm") applied to a learner's
+// proposals, child by child in order: a gene outside its bounds
+// (ChildGeneBounds) is clamped into them, as mutation clamps (but for the
+// initial individual, the default genome in generation 0, evaluated as it
+// is); a genome whose 3-significant-figure key was seen is drawn again
+// (Learner::Redraw) until it is new (a run that finds none in 100000 draws
+// throws); each accepted key is added to `seen`. A gene that is
+// not a finite number is the learner's bug: WALKERS_CHECK's std::logic_error
+// naming the learner, the child and the gene.
 void AdmitChildren(Learner& learner, const BreedingInputs& in, std::vector<Individual>* children,
                    std::set<GenomeKey>* seen);
 
@@ -118,7 +119,7 @@ const LearnerSpec& DefaultLearner();
 std::vector<std::string> LearnerNames();
 // the learners walkers runs itself (`evolve --learner`, `reproduce --learners`)
 std::vector<std::string> BuiltInLearnerNames();
-// Throws std::invalid_argument naming the allowed values.
+// Throws InputError (files/errors.h) naming the allowed values.
 const LearnerSpec& LearnerByName(const std::string& name);
 // LearnerByName(name)'s learner for a run of `ga`'s sizes and `seed`.
 std::unique_ptr<Learner> MakeLearner(const std::string& name, const GeneticAlgorithmConfig& ga, std::uint64_t seed);

@@ -18,9 +18,10 @@
 #include <pagmo/problem.hpp>
 #include <pagmo/s11n.hpp>
 
+#include "evolve/genetic_algorithm.h"
+#include "files/errors.h"
 #include "files/input_file.h"
 #include "files/number_text.h"
-#include "evolve/genetic_algorithm.h"
 
 namespace walkers {
 
@@ -79,10 +80,9 @@ class Answers : public Oracle {
       : proposals_(proposals), objectives_(std::move(objectives)), what_(std::move(what)) {}
 
   double Objective(const vector_double& x) override {
-    if (next_ >= objectives_.size() || (proposals_ && x != (*proposals_)[next_])) {
-      throw std::logic_error(what_ + ": call " + std::to_string(next_) + " of the algorithm asked for another genome " +
-                             "than it proposed; its generation is not one batch");
-    }
+    WALKERS_CHECK(next_ < objectives_.size() && (!proposals_ || x == (*proposals_)[next_]),
+                  what_ + ": call " + std::to_string(next_) + " of the algorithm asked for another genome " +
+                      "than it proposed; its generation is not one batch");
     return objectives_[next_++];
   }
   bool AllAnswered() const { return next_ == objectives_.size(); }
@@ -153,16 +153,13 @@ class PagmoLearner : public Learner {
 
   std::vector<Individual> Propose(const BreedingInputs& in, const Archive& archive) override {
     if (in.generation == 0) return first_generation_.Propose(in, archive);
-    if (population_.size() != population_size_) {
-      throw std::logic_error(What(in) + ": asked before it was told generation 0");
-    }
+    WALKERS_CHECK(population_.size() == population_size_, What(in) + ": asked before it was told generation 0");
     pagmo::algorithm asking = algorithm_;
     Recorder recorder;
     asking.evolve(Population(in.body_ceiling, &recorder));
-    if (recorder.asked.size() != population_size_) {
-      throw std::logic_error(What(in) + ": the algorithm asked for " + std::to_string(recorder.asked.size()) +
-                             " evaluations, not one per child (" + std::to_string(population_size_) + ")");
-    }
+    WALKERS_CHECK(recorder.asked.size() == population_size_,
+                  What(in) + ": the algorithm asked for " + std::to_string(recorder.asked.size()) +
+                      " evaluations, not one per child (" + std::to_string(population_size_) + ")");
     proposals_ = std::move(recorder.asked);
     std::vector<Individual> children(population_size_);
     for (std::size_t c = 0; c < children.size(); ++c) {
@@ -183,9 +180,7 @@ class PagmoLearner : public Learner {
   void Tell(const BreedingInputs& in, const std::vector<Individual>& evaluated) override {
     std::vector<double> objectives;
     for (const Individual& child : evaluated) {
-      if (!std::isfinite(child.fitness())) {
-        throw std::runtime_error(What(in) + ": child " + child.id() + " has no finite fitness");
-      }
+      WALKERS_CHECK(std::isfinite(child.fitness()), What(in) + ": child " + child.id() + " has no finite fitness");
       objectives.push_back(-child.fitness());
     }
     if (in.generation == 0) {
@@ -199,10 +194,9 @@ class PagmoLearner : public Learner {
       told_.clear();
       return;
     }
-    if (evaluated.size() != proposals_.size()) {
-      throw std::logic_error(What(in) + ": told " + std::to_string(evaluated.size()) + " children, proposed " +
-                             std::to_string(proposals_.size()));
-    }
+    WALKERS_CHECK(evaluated.size() == proposals_.size(), What(in) + ": told " + std::to_string(evaluated.size()) +
+                                                             " children, proposed " +
+                                                             std::to_string(proposals_.size()));
     // each proposal gets the evaluation of the child that stood for it (the
     // proposal itself unless the GA's rules clamped or redrew it)
     Told told{in.body_ceiling, std::move(objectives)};
@@ -310,9 +304,7 @@ class PagmoLearner : public Learner {
   void Advance(const Told& told, const std::vector<vector_double>* proposals, const std::string& what) {
     Answers answers(proposals, told.objectives, what);
     const pagmo::population evolved = algorithm_.evolve(Population(told.body_ceiling, &answers));
-    if (!answers.AllAnswered()) {
-      throw std::logic_error(what + ": the algorithm evaluated fewer children than it proposed");
-    }
+    WALKERS_CHECK(answers.AllAnswered(), what + ": the algorithm evaluated fewer children than it proposed");
     population_.clear();
     for (std::size_t i = 0; i < evolved.size(); ++i) population_.push_back({evolved.get_x()[i], evolved.get_f()[i][0]});
   }

@@ -20,23 +20,23 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 void ReproductionConfig::Validate() const {
-  if (learners.empty()) throw std::invalid_argument("learners: at least one learner is needed");
+  if (learners.empty()) throw InputError("learners: at least one learner is needed");
   for (std::size_t i = 0; i < learners.size(); ++i) {
     if (LearnerByName(learners[i]).external) {
-      throw std::invalid_argument("learners: '" + learners[i] +
-                                  "' proposes from a program outside walkers; a reproduction runs the built-in "
-                                  "learners only (the Python module's walkers.Run drives an external one)");
+      throw InputError("learners: '" + learners[i] +
+                       "' proposes from a program outside walkers; a reproduction runs the built-in learners only "
+                       "(the Python module's walkers.Run drives an external one)");
     }
     for (std::size_t j = 0; j < i; ++j) {
-      if (learners[j] == learners[i]) throw std::invalid_argument("learners: '" + learners[i] + "' is given twice");
+      if (learners[j] == learners[i]) throw InputError("learners: '" + learners[i] + "' is given twice");
     }
   }
   RequireInRange("replicates", replicates, 1, kMaxReplicates);
   RequireInRange("ensemble", ensemble, 1, kMaxEnsemble);
   if (seed > kMaxSeed - static_cast<std::uint64_t>(replicates - 1)) {
-    throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
-                                std::to_string(kMaxSeed - (replicates - 1)) + "] for " + std::to_string(replicates) +
-                                " replicates (replicate r uses seed + r - 1)");
+    throw InputError("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
+                     std::to_string(kMaxSeed - (replicates - 1)) + "] for " + std::to_string(replicates) +
+                     " replicates (replicate r uses seed + r - 1)");
   }
   for (const PlannedRun& run : PlanRuns(*this)) run.config.Validate();
 }

@@ -54,8 +54,8 @@ struct ReproductionConfig {
 
   // Every run's configuration (RunConfig::Validate), seed + replicates - 1
   // within the seeds' range, at least one learner, none twice, and the
-  // ensemble's size in [1, kMaxEnsemble]. Throws std::invalid_argument naming
-  // the field.
+  // ensemble's size in [1, kMaxEnsemble]. Throws InputError naming the
+  // field.
   void Validate() const;
 };
 
@@ -109,7 +109,8 @@ class Reproduction {
   // unfinished runs, skips finished ones and starts missing ones); kForce
   // sets the old runs and results aside in DIR/replaced/ until the first new
   // run's first checkpoint, and puts them back if abandoned before it.
-  // Throws std::runtime_error naming the directory.
+  // Throws InputError for a configuration that cannot run, std::runtime_error
+  // for a folder that cannot be written as asked; each names the directory.
   Reproduction(const ReproductionConfig& config, const std::string& dir, StartMode mode);
   ~Reproduction();
 

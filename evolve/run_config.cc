@@ -1,7 +1,6 @@
 #include "evolve/run_config.h"
 
 #include <limits>
-#include <stdexcept>
 
 #include "files/input_file.h"
 
@@ -44,23 +43,20 @@ double Of(const EvaluationField& field, const EvaluationSettings& settings) {
 
 bool NamesLearner(const RunConfig& c) { return c.learner != DefaultLearner().name; }
 
-void RunConfig::Validate() const {
+void RunConfig::Validate(const std::string& source) const {
   const LearnerSpec& spec = LearnerByName(learner);
-  RequireInRange("generations", generations, 1, kMaxGenerations);
+  RequireInRange(FieldOf(source, "generations"), generations, 1, kMaxGenerations);
   if (seed > kMaxSeed) {
-    throw std::invalid_argument("seed = " + std::to_string(seed) + " is outside its allowed range [0, " +
-                                std::to_string(kMaxSeed) + "]");
+    throw InputError(FieldOf(source, "seed") + " = " + std::to_string(seed) + " is outside its allowed range [0, " +
+                     std::to_string(kMaxSeed) + "]");
   }
-  ga.Validate();
-  if (ga.population < spec.min_population) {
-    throw std::invalid_argument("population = " + std::to_string(ga.population) + " is outside its allowed range [" +
-                                std::to_string(spec.min_population) + ", " + std::to_string(kMaxPopulation) +
-                                "] for the learner " + spec.name);
-  }
+  ga.Validate(source);
+  RequireInRange(FieldOf(source, "population"), ga.population, spec.min_population, kMaxPopulation,
+                 std::string(" for the learner ") + spec.name);
   for (const EvaluationField& field : kEvaluationFields) {
-    RequireInRange(std::string("evaluation.") + field.key, Of(field, evaluation), field.range);
+    RequireInRange(FieldOf(source, std::string("evaluation.") + field.key), Of(field, evaluation), field.range);
   }
-  RequireInRange("evaluation.max_order", evaluation.integrator.max_order, 1, kMaxBdfOrder);
+  RequireInRange(FieldOf(source, "evaluation.max_order"), evaluation.integrator.max_order, 1, kMaxBdfOrder);
 }
 
 json EvaluationSettingsToJson(const EvaluationSettings& settings) {
@@ -96,40 +92,36 @@ void RequireResumableAs(const RunConfig& stored, const RunConfig& requested, con
   for (const auto& item : want.items()) {
     if (item.key() == "generations") continue;  // a resumed run may be extended
     if (!have.contains(item.key()) || have.at(item.key()) != item.value()) {
-      throw std::runtime_error(source + ": this run has " + item.key() + " = " +
-                               (have.contains(item.key()) ? have.at(item.key()).dump() : std::string("(none)")) +
-                               " but " + item.value().dump() + " was asked for; resume with the run's own settings");
+      throw InputError(source + ": this run has " + item.key() + " = " +
+                       (have.contains(item.key()) ? have.at(item.key()).dump() : std::string("(none)")) + " but " +
+                       item.value().dump() + " was asked for; resume with the run's own settings");
     }
   }
 }
 
 RunConfig RunConfigFromJson(const json& j, const std::string& source) {
-  try {
-    const json keys = RunConfigToJson(RunConfig{});
-    const JsonFields f(j, source);
-    std::vector<std::string> known = KeysOf(keys);
-    known.push_back("learner");  // absent: the paper's GA
-    f.RequireOnly(known);
-    RunConfig c;
-    c.scaffold_case = ScaffoldCaseByName(f.String("case"));
-    if (j.contains("learner")) c.learner = f.OneOf("learner", LearnerNames());
-    c.preset = PresetByName(f.String("preset"));
-    c.generations = IntField(f, "generations");
-    c.seed = f.Unsigned("seed", kMaxSeed);
-    c.ga.population = IntField(f, "population");
-    c.ga.archive_size = IntField(f, "archive_size");
-    c.ga.mutation_children = IntField(f, "mutation_children");
-    c.ga.mutation_probability = f.Number("mutation_probability");
-    const JsonFields e = f.Object("evaluation");
-    e.RequireOnly(KeysOf(keys.at("evaluation")));
-    for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
-    c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
-    c.evaluation.integrator.restart_on_torque_change = e.Bool("restart_at_ticks");
-    c.Validate();
-    return c;
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(source + ": " + e.what());
-  }
+  const json keys = RunConfigToJson(RunConfig{});
+  const JsonFields f(j, source);
+  std::vector<std::string> known = KeysOf(keys);
+  known.push_back("learner");  // absent: the paper's GA
+  f.RequireOnly(known);
+  RunConfig c;
+  c.scaffold_case = ScaffoldCaseByName(f.OneOf("case", ScaffoldCaseNames()));
+  if (j.contains("learner")) c.learner = f.OneOf("learner", LearnerNames());
+  c.preset = PresetByName(f.OneOf("preset", PresetNames()));
+  c.generations = IntField(f, "generations");
+  c.seed = f.Unsigned("seed", kMaxSeed);
+  c.ga.population = IntField(f, "population");
+  c.ga.archive_size = IntField(f, "archive_size");
+  c.ga.mutation_children = IntField(f, "mutation_children");
+  c.ga.mutation_probability = f.Number("mutation_probability");
+  const JsonFields e = f.Object("evaluation");
+  e.RequireOnly(KeysOf(keys.at("evaluation")));
+  for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
+  c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
+  c.evaluation.integrator.restart_on_torque_change = e.Bool("restart_at_ticks");
+  c.Validate(source);
+  return c;
 }
 
 RunConfig ParseRunConfig(const std::string& text, const std::string& source) {

@@ -31,8 +31,9 @@ struct RunConfig {
 
   // Checks every constraint a run needs from its first generation to its
   // last, so that none fails on its configuration once begun. Throws
-  // std::invalid_argument naming the field and its allowed range.
-  void Validate() const;
+  // InputError naming `source` (the file, when the configuration comes from
+  // one), the field and its allowed range.
+  void Validate(const std::string& source = "") const;
 };
 
 // config.json's content. "learner" is written only for a learner other than
@@ -40,12 +41,12 @@ struct RunConfig {
 nlohmann::json RunConfigToJson(const RunConfig& config);
 // The evaluation settings as config.json's "evaluation" object records them.
 nlohmann::json EvaluationSettingsToJson(const EvaluationSettings& settings);
-// Throws std::runtime_error naming `source` and the first setting in which the
+// Throws InputError naming `source` and the first setting in which the
 // run `stored` (its config.json) differs from `requested`, its learner
 // included; the generations may differ (a resumed run may be extended).
 void RequireResumableAs(const RunConfig& stored, const RunConfig& requested, const std::string& source);
 // config.json's content: every field present, typed and in range, and no
-// other. Throws std::runtime_error whose message starts with `source`.
+// other. Throws InputError whose message starts with `source`.
 RunConfig RunConfigFromJson(const nlohmann::json& json, const std::string& source);
 // The same from the file's text, parsed strictly (files/input_file.h).
 RunConfig ParseRunConfig(const std::string& text, const std::string& source);

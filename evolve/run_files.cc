@@ -146,15 +146,15 @@ template <typename OnRow>
 long CheckedRows(const std::string& path, std::uint64_t bytes, const std::string& header, const OnRow& row) {
   std::string text = ReadFile(path);
   if (text.size() < bytes) {
-    throw std::runtime_error(path + ": " + std::to_string(text.size()) + " bytes, shorter than the " +
-                             std::to_string(bytes) + " the checkpoint says");
+    throw InputError(path + ": " + std::to_string(text.size()) + " bytes, shorter than the " + std::to_string(bytes) +
+                     " the checkpoint says");
   }
   text.resize(bytes);
   if (text.empty() || text.back() != '\n') {
-    throw std::runtime_error(path + ": the checkpoint's size of " + std::to_string(bytes) + " bytes ends within a row");
+    throw InputError(path + ": the checkpoint's size of " + std::to_string(bytes) + " bytes ends within a row");
   }
   if (text.compare(0, header.size() + 1, header + "\n") != 0) {
-    throw std::runtime_error(path + ": its header is not this program's (" + header.substr(0, 40) + "...)");
+    throw InputError(path + ": its header is not this program's (" + header.substr(0, 40) + "...)");
   }
   CsvReader reader(std::move(text), path);
   long rows = 0;
@@ -289,19 +289,19 @@ std::set<GenomeKey> CheckRunFilesUpTo(const RunFiles& files, const Checkpoint& c
       });
   const long expected = static_cast<long>(cp.completed_generations) * population;
   if (evaluations != expected) {
-    throw std::runtime_error(files.evaluations + ": " + std::to_string(evaluations) +
-                             " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations) +
-                             " generations of " + std::to_string(population) + " (" + std::to_string(expected) + ")");
+    throw InputError(files.evaluations + ": " + std::to_string(evaluations) +
+                     " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations) +
+                     " generations of " + std::to_string(population) + " (" + std::to_string(expected) + ")");
   }
   const long generations = CheckedRows(files.generations, cp.generations_bytes, kGenerationsHeader,
                                        [](const CsvReader& row, long index) { row.Integer(0, index, index); });
   if (generations != cp.completed_generations) {
-    throw std::runtime_error(files.generations + ": " + std::to_string(generations) +
-                             " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations));
+    throw InputError(files.generations + ": " + std::to_string(generations) +
+                     " rows up to the checkpoint, which says " + std::to_string(cp.completed_generations));
   }
   for (const Individual& ind : cp.archive) {
     if (!seen.count(KeyOf(ind.genome))) {
-      throw std::runtime_error(files.checkpoint + ": archive member " + ind.id() + " is not in " + files.evaluations);
+      throw InputError(files.checkpoint + ": archive member " + ind.id() + " is not in " + files.evaluations);
     }
   }
   return seen;
@@ -321,10 +321,10 @@ void CheckNoResultsWithoutCheckpoint(const RunFiles& files, const RunConfig& con
     if (results.empty() && fs::exists(*f)) results = fs::path(*f).filename().string() + " exists";
   }
   if (!results.empty()) {
-    throw std::runtime_error(files.checkpoint + ": missing, but the run has results (" + results +
-                             "); restore checkpoint.json to resume the run, or pass --force to start it again "
-                             "(the old files are kept in " + SetAside::FolderIn(files.dir) +
-                             " until the new run's first generation is written)");
+    throw InputError(files.checkpoint + ": missing, but the run has results (" + results +
+                     "); restore checkpoint.json to resume the run, or pass --force to start it again "
+                     "(the old files are kept in " + SetAside::FolderIn(files.dir) +
+                     " until the new run's first generation is written)");
   }
 }
 

@@ -40,14 +40,12 @@ nlohmann::json CheckpointToJson(const Checkpoint& checkpoint);
 // generations of config.ga fill it, best first, each member's generation and
 // child within the run and its genome valid; the learner's state, for a
 // learner that keeps one, one that learner restores (Learner::Restore).
-// Throws std::runtime_error whose message starts with `source` and names the
-// field.
+// Throws InputError whose message starts with `source` and names the field.
 Checkpoint ParseCheckpoint(const std::string& text, const RunConfig& config, const std::string& source);
 
 // archive.json of a finished run configured as `config`, checked as a
-// checkpoint's archive is. Throws std::runtime_error naming the file.
+// checkpoint's archive is. Throws InputError naming the file.
 std::vector<Individual> LoadArchive(const std::string& path, const RunConfig& config);
-
 
 // The file names of a run, inside its directory.
 struct RunFiles {
@@ -78,11 +76,11 @@ nlohmann::json ArchiveFileJson(const RunConfig& config, int completed, double in
 // The CSV files of the run in `files` up to the checkpoint's sizes, for a
 // resume: this program's headers, whole rows, the checkpoint's generations
 // in order, every archive member among the evaluations. Returns the genomes
-// evaluated so far. Throws std::runtime_error naming the file.
+// evaluated so far. Throws InputError naming the file.
 std::set<GenomeKey> CheckRunFilesUpTo(const RunFiles& files, const Checkpoint& checkpoint, const RunConfig& config);
 
 // A run folder without checkpoint.json may start again only if the run had
-// not completed a generation: throws std::runtime_error saying what to do if
+// not completed a generation: throws InputError saying what to do if
 // it has results beyond that.
 void CheckNoResultsWithoutCheckpoint(const RunFiles& files, const RunConfig& config);
 

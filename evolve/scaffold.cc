@@ -1,7 +1,10 @@
 #include "evolve/scaffold.h"
 
 #include <algorithm>
-#include <stdexcept>
+#include <string>
+
+#include "files/errors.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace {
@@ -71,7 +74,7 @@ const ScaffoldSpec& ScaffoldSpecOf(ScaffoldCase c) {
   for (const ScaffoldSpec& spec : Scaffolds()) {
     if (spec.id == c) return spec;
   }
-  throw std::invalid_argument("unknown scaffold case");
+  WALKERS_CHECK(false, "scaffold case " + std::to_string(static_cast<int>(c)) + " is none of Scaffolds()");
 }
 
 const char* ScaffoldCaseName(ScaffoldCase c) { return ScaffoldSpecOf(c).name; }
@@ -83,12 +86,10 @@ std::vector<std::string> ScaffoldCaseNames() {
 }
 
 ScaffoldCase ScaffoldCaseByName(const std::string& name) {
-  std::string allowed;
   for (const ScaffoldSpec& spec : Scaffolds()) {
     if (name == spec.name) return spec.id;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(spec.name);
   }
-  throw std::invalid_argument("unknown case '" + name + "': allowed values are " + allowed);
+  FailUnknownName("case", name, ScaffoldCaseNames());
 }
 
 std::unique_ptr<Scaffold> MakeScaffold(ScaffoldCase c, const Preset& preset) { return ScaffoldSpecOf(c).make(preset); }

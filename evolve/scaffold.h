@@ -1,7 +1,8 @@
-// The three scaffolds (paper §2.5, MODEL.md §5): each bounds the body-length
-// gene halfBodyX from above, by generation or by performance. Scaffolds() is
-// the one list of them: the command line and the run plan read it, and the
-// statistics and the figures through reproduction.json.
+// The three scaffolds (paper §2.5; docs/model.md, "Scaffolds"): each bounds
+// the body-length gene halfBodyX from above, by generation or by
+// performance. Scaffolds() is the one list of them: the command line and the
+// run plan read it, and the statistics and the figures through
+// reproduction.json.
 #pragma once
 
 #include <memory>
@@ -30,7 +31,8 @@ class Scaffold {
 };
 
 // When the authors' program draws halfBodyX again under the scaffold's
-// ceiling (the `original` preset's body-gene mutation, MODEL.md §6): their
+// ceiling (the `original` preset's body-gene mutation; docs/model.md,
+// "Presets"): their
 // case-2 evolver does it once per child, the others after every gene that
 // mutated.
 enum class AuthorsBodyRedraw { kAfterEveryMutatedGene, kOnceAtTheEnd };
@@ -55,7 +57,7 @@ const ScaffoldSpec& ScaffoldSpecOf(ScaffoldCase c);
 // "free", "time", "performance"
 const char* ScaffoldCaseName(ScaffoldCase c);
 std::vector<std::string> ScaffoldCaseNames();
-// Throws std::invalid_argument naming the allowed values.
+// Throws InputError (files/errors.h) naming the allowed values.
 ScaffoldCase ScaffoldCaseByName(const std::string& name);
 
 std::unique_ptr<Scaffold> MakeScaffold(ScaffoldCase c, const Preset& preset);

@@ -1,6 +1,7 @@
-// How children are made (MODEL.md §5): per-gene Gaussian mutation clamped to
-// the bounds, the preset's treatment of the body-length gene, arithmetic
-// crossover, and the 3-significant-figure keys that reject duplicates.
+// How children are made (docs/model.md, "Genetic algorithm"): per-gene
+// Gaussian mutation clamped to the bounds, the preset's treatment of the
+// body-length gene, arithmetic crossover, and the 3-significant-figure keys
+// that reject duplicates.
 #pragma once
 
 #include <array>

@@ -80,6 +80,12 @@ json ParseJson(const std::string& text, const std::string& source) {
 
 json LoadJsonFile(const std::string& path) { return ParseJson(ReadFile(path), path); }
 
+void FailUnknownName(const std::string& what, const std::string& name, const std::vector<std::string>& allowed) {
+  std::string list;
+  for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  throw InputError("unknown " + what + " '" + name + "': allowed values are " + list);
+}
+
 std::vector<std::string> KeysOf(const json& object) {
   std::vector<std::string> keys;
   for (const auto& item : object.items()) keys.push_back(item.key());
@@ -90,17 +96,17 @@ std::string NumberRange::ToString() const {
   return (open_below ? "(" : "[") + FormatExact(lo) + ", " + FormatExact(hi) + "]";
 }
 
-void RequireInRange(const std::string& name, std::int64_t value, std::int64_t lo, std::int64_t hi) {
+void RequireInRange(const std::string& name, std::int64_t value, std::int64_t lo, std::int64_t hi,
+                    const std::string& why) {
   if (value < lo || value > hi) {
-    throw std::invalid_argument(name + " = " + std::to_string(value) + " is outside its allowed range [" +
-                                std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    throw InputError(name + " = " + std::to_string(value) + " is outside its allowed range [" + std::to_string(lo) +
+                     ", " + std::to_string(hi) + "]" + why);
   }
 }
 
 void RequireInRange(const std::string& name, double value, const NumberRange& range) {
   if (!range.Contains(value)) {
-    throw std::invalid_argument(name + " = " + FormatExact(value) + " is outside its allowed range " +
-                                range.ToString());
+    throw InputError(name + " = " + FormatExact(value) + " is outside its allowed range " + range.ToString());
   }
 }
 

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,9 +28,19 @@ constexpr int kMaxJsonDepth = 16;
 nlohmann::json ParseJson(const std::string& text, const std::string& source);
 nlohmann::json LoadJsonFile(const std::string& path);
 
+// Throws InputError "unknown WHAT 'NAME': allowed values are A, B, C".
+[[noreturn]] void FailUnknownName(const std::string& what, const std::string& name,
+                                  const std::vector<std::string>& allowed);
+
 // The keys of a JSON object, in its order: what JsonFields::RequireOnly allows
 // when a file's fields are those its writer writes.
 std::vector<std::string> KeysOf(const nlohmann::json& object);
+
+// A field's name in messages: "SOURCE: FIELD", or FIELD when there is no
+// source (a value given in code, on the command line or from Python).
+inline std::string FieldOf(const std::string& source, const std::string& field) {
+  return source.empty() ? field : source + ": " + field;
+}
 
 // A closed interval [lo, hi], or (lo, hi] when open_below.
 struct NumberRange {
@@ -42,9 +51,12 @@ struct NumberRange {
   std::string ToString() const;  // "[0, 800]", "(0, 1000]"
 };
 
-// Throws std::invalid_argument "NAME = VALUE is outside its allowed range
-// [LO, HI]" unless the value is within it.
-void RequireInRange(const std::string& name, std::int64_t value, std::int64_t lo, std::int64_t hi);
+// Throws InputError "NAME = VALUE is outside its allowed range [LO, HI]"
+// unless the value is within it; NAME says where the value came from
+// (FieldOf("run/config.json", "population"), "ensemble").
+// `why`, when given, follows the range (" for the learner sade").
+void RequireInRange(const std::string& name, std::int64_t value, std::int64_t lo, std::int64_t hi,
+                    const std::string& why = "");
 void RequireInRange(const std::string& name, double value, const NumberRange& range);
 
 // The fields of one JSON object, each read with its presence, type and range

@@ -73,7 +73,8 @@ class PythonRun {
       py::gil_scoped_release no_gil;
       evaluated = run_->EvaluateChildren(in, children);
     });
-    py::array_t<double> genes({static_cast<py::ssize_t>(evaluated.children.size()), static_cast<py::ssize_t>(kNumGenes)});
+    py::array_t<double> genes(
+        {static_cast<py::ssize_t>(evaluated.children.size()), static_cast<py::ssize_t>(kNumGenes)});
     std::vector<EvaluationResult> results;
     py::list lineages;
     for (std::size_t c = 0; c < evaluated.children.size(); ++c) {
@@ -163,11 +164,10 @@ class PythonRun {
   // the run is closed or done, or when its generation is evaluated and
   // `call` is not checkpoint().
   const BreedingInputs& Begun(const std::string& call) {
-    if (!run_) {
-      if (finished_) throw std::runtime_error(call + ": the run is done (" + std::to_string(generations_) + " generations)");
-      throw std::runtime_error(call + ": the run is closed");
+    if (run_ ? run_->done() : finished_) {
+      throw std::runtime_error(call + ": the run is done (" + std::to_string(generations_) + " generations)");
     }
-    if (run_->done()) throw std::runtime_error(call + ": the run is done (" + std::to_string(generations_) + " generations)");
+    if (!run_) throw std::runtime_error(call + ": the run is closed");
     if (evaluated_ && call != "checkpoint()") {
       throw std::runtime_error(call + ": generation " + std::to_string(begun_->generation) +
                                " is evaluated; call checkpoint(state) first");

@@ -22,7 +22,6 @@
 #include "control/evaluation.h"
 #include "control/evaluation_json.h"
 #include "control/genome.h"
-#include "files/input_file.h"
 #include "control/preset.h"
 #include "control/walk_record.h"
 #include "evolve/evaluator.h"
@@ -31,6 +30,7 @@
 #include "evolve/reproduction.h"  // the scaffolds and learners as JSON
 #include "evolve/scaffold.h"
 #include "evolve/source_commit.h"
+#include "files/input_file.h"
 #include "python/conversions.h"
 #include "python/run_binding.h"
 
@@ -117,12 +117,10 @@ PYBIND11_MODULE(walkers, m) {
   m.doc() = "Scaffolded bipedal walkers: genomes and their evaluations (docs/python.md)";
   m.attr("__version__") = SourceCommit();
 
-  // the genome files' and the genes' errors are bad input, as the CLI reports them
+  // bad input, from a file or an argument (files/errors.h), as the CLI reports it
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) std::rethrow_exception(error);
-    } catch (const GenomeError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "files/errors.h"
 #include "tests/temp_dir_test.h"
 
 namespace walkers {
@@ -35,7 +36,7 @@ class GenomeFileTest : public TempDirTest {
   static std::string LoadError(const std::string& path) {
     try {
       LoadGenome(path);
-    } catch (const GenomeError& e) {
+    } catch (const InputError& e) {
       return e.what();
     }
     return "";

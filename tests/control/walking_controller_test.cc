@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/kinematics.h"
+#include "files/errors.h"
 
 namespace walkers {
 namespace {
@@ -182,7 +183,7 @@ TEST(PresetTest, ByNameAndUnknownNamesAreRejected) {
   try {
     PresetByName("authors");
     FAIL() << "accepted an unknown preset";
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("paper, original"), std::string::npos);
   }
 }

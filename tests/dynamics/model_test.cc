@@ -11,9 +11,9 @@ namespace walkers {
 namespace {
 
 // The mass model of the default genome, computed by hand from its half
-// sizes (MODEL.md §2). The authors' program, built against Simbody 3.7,
-// reports the same masses and pitch inertias to 1e-7 (its genes are 32-bit
-// floats): trunk 371.51137 kg and 98.649221 kg m^2, each hip body
+// sizes (docs/model.md, "Mass model"). The authors' program, built against
+// Simbody 3.7, reports the same masses and pitch inertias to 1e-7 (its genes
+// are 32-bit floats): trunk 371.51137 kg and 98.649221 kg m^2, each hip body
 // 105.45029 kg m^2 about its origin, foot and tibia 0.12287443, knee 0.0007.
 TEST(ModelTest, TheDefaultGenomesMassModelIsTheAuthors) {
   const Model m = BuildModel(BodyOf(DefaultGenome()));

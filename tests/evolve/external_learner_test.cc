@@ -170,7 +170,7 @@ TEST(ExternalLearnerListTest, NeitherEvolveNorReproduceRunsIt) {
   try {
     config.Validate();
     FAIL() << "a reproduction took the external learner";
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("walkers.Run"), std::string::npos) << e.what();
   }
 }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "files/errors.h"
 #include "tests/evolve/individuals.h"
 
 namespace walkers {
@@ -96,10 +97,15 @@ TEST_F(BreedTest, ADuplicateIsDrawnAgain) {
 TEST(GeneticAlgorithmConfigTest, RejectsImpossibleSizes) {
   GeneticAlgorithmConfig c;
   c.mutation_children = 20;
-  EXPECT_THROW(c.Validate(), std::invalid_argument);
+  EXPECT_THROW(c.Validate(), InputError);
   c = GeneticAlgorithmConfig{};
   c.archive_size = 1;
-  EXPECT_THROW(c.Validate(), std::invalid_argument);
+  try {
+    c.Validate("run/config.json");
+    FAIL() << "accepted an archive of 1";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "run/config.json: archive_size = 1 is outside its allowed range [2, 100000]");
+  }
   c = GeneticAlgorithmConfig{};
   EXPECT_NO_THROW(c.Validate());
   EXPECT_EQ(c.crossover_children(), 6);

@@ -67,7 +67,8 @@ TEST(LineageTest, ItsTextIsTheFilesAndReadsBackTheSame) {
 }
 
 TEST(LineageTest, TextThatIsNoLineageIsRefused) {
-  for (const char* text : {"1/2+", "1/2/3", "+1/2", "01/2", "1/2 clamp", "cmaes  redrawn", "x redrawn ", "1/99999999999"}) {
+  for (const char* text :
+       {"1/2+", "1/2/3", "+1/2", "01/2", "1/2 clamp", "cmaes  redrawn", "x redrawn ", "1/99999999999"}) {
     EXPECT_FALSE(Lineage::FromText(text).has_value()) << text;
   }
 }

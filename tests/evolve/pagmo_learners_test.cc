@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "files/input_file.h"
 #include "evolve/genetic_algorithm.h"
+#include "files/input_file.h"
 
 namespace walkers {
 namespace {

@@ -222,7 +222,7 @@ TEST_F(RunTest, ForceWithAnImpossibleConfigurationLeavesTheOldRunIntact) {
   try {
     EvolutionRun(impossible, Dir("a"), StartMode::kForce, Threads(2));
     FAIL() << "started a run that cannot breed";
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "population = 1 is outside its allowed range [2, 100000]");
   }
   EXPECT_EQ(RunFileContents(Dir("a")), old_run);
@@ -232,7 +232,7 @@ TEST_F(RunTest, ValidateChecksEveryConstraintOfARun) {
   const auto error = [](RunConfig c) -> std::string {
     try {
       c.Validate();
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
       return e.what();
     }
     return "";

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "files/errors.h"
+
 namespace walkers {
 namespace {
 
@@ -63,7 +65,7 @@ TEST(ScaffoldTest, CasesByName) {
   try {
     ScaffoldCaseByName("scaffolded");
     FAIL() << "accepted an unknown case";
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "unknown case 'scaffolded': allowed values are free, time, performance");
   }
 }

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "files/errors.h"
+#include "tests/input_error_message.h"
 
 namespace walkers {
 namespace {
@@ -10,12 +10,7 @@ namespace {
 // the message of the InputError `f` throws, or "" if it throws none
 template <typename F>
 std::string Error(const F& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::InputErrorMessage(f);
 }
 
 TEST(CsvTest, QuotedFieldsHoldCommasAndQuotesAndComeBackAsWritten) {
@@ -52,7 +47,8 @@ TEST(CsvTest, MessagesNameTheFileTheRowAndTheColumn) {
   ASSERT_TRUE(rows.Next());
   EXPECT_EQ(Error([&] { rows.Number(1); }), "f.csv: row 2, column 'x': 'nan' is not a finite number");
   EXPECT_EQ(Error([&] { rows.Integer(1, 0, 9); }), "f.csv: row 2, column 'x': 'nan' is not an integer");
-  EXPECT_EQ(Error([&] { rows.Integer(0, 0, 9); }), "f.csv: row 2, column 'n': '12' is outside its allowed range [0, 9]");
+  EXPECT_EQ(Error([&] { rows.Integer(0, 0, 9); }),
+            "f.csv: row 2, column 'n': '12' is outside its allowed range [0, 9]");
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/input_error_message.h"
+
 namespace walkers {
 namespace {
 
@@ -10,12 +12,7 @@ using nlohmann::json;
 // the message of the InputError `f` throws, or "" if it throws none
 template <typename F>
 std::string Error(const F& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::InputErrorMessage(f);
 }
 
 TEST(ParseJsonTest, RefusesAKeyGivenTwiceAtAnyDepth) {
@@ -62,7 +59,7 @@ TEST(RequireInRangeTest, PrintsBoundsInTheirShortestForm) {
   try {
     RequireInRange("mutation_probability", 1.5, {0.0, 1.0, true});
     FAIL();
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "mutation_probability = 1.5 is outside its allowed range (0, 1]");
   }
   EXPECT_NO_THROW(RequireInRange("population", 2, 2, 100000));

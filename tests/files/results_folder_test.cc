@@ -51,7 +51,8 @@ TEST_F(ResultsFolderTest, ANewFolderIsCreatedAndOneHoldingResultsRefused) {
 }
 
 TEST_F(ResultsFolderTest, ResumingNeedsTheFolderAndNeverCreatesIt) {
-  EXPECT_EQ(Error([&] { Open(Dir("absent"), StartMode::kResume); }), Dir("absent") + ": no run to resume (no such directory)");
+  EXPECT_EQ(Error([&] { Open(Dir("absent"), StartMode::kResume); }),
+            Dir("absent") + ": no run to resume (no such directory)");
   EXPECT_FALSE(fs::exists(Dir("absent")));
 }
 

@@ -1,11 +1,10 @@
 // libFuzzer target: checkpoint.json (evolve/run.h) of the run the seed
 // corpus comes from (tests/fuzz/seeds/config/performance.json). Any bytes
-// are either a checkpoint that run can have or refused with a
-// std::runtime_error naming the file and field, never a crash or another
-// exception; an accepted checkpoint written out reads back the same.
+// are either a checkpoint that run can have or refused with an InputError
+// naming the file and field, never a crash or another exception; an
+// accepted checkpoint written out reads back the same.
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -34,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Checkpoint checkpoint;
   try {
     checkpoint = ParseCheckpoint(text, config, "checkpoint.json");
-  } catch (const std::runtime_error&) {
+  } catch (const InputError&) {
     return 0;
   }
   const nlohmann::json written = CheckpointToJson(checkpoint);

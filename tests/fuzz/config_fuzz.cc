@@ -1,10 +1,9 @@
 // libFuzzer target: a run's config.json (evolve/run.h). Any bytes are either
-// a valid configuration or refused with a std::runtime_error naming the
-// file, never a crash or another exception; an accepted configuration
-// written out reads back the same.
+// a valid configuration or refused with an InputError naming the file,
+// never a crash or another exception; an accepted configuration written out
+// reads back the same.
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -17,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   RunConfig config;
   try {
     config = ParseRunConfig(text, "config.json");
-  } catch (const std::runtime_error&) {
+  } catch (const InputError&) {
     return 0;
   }
   const nlohmann::json written = RunConfigToJson(config);
