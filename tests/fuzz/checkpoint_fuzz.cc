@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/run.h"
+#include "files/errors.h"
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/run.h"
+#include "files/errors.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace walkers;
