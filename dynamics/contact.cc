@@ -59,7 +59,8 @@ bool PairEnabled(const ModelOptions& options, const ContactPairSpec& spec) {
 // every enabled pair's result at the state of kin; with welds, not the pairs
 // they hold (HeldByWeld), which are then not computed at all
 template <typename Visit>
-void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit, const Welds* welds = nullptr) {
+void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit, const Welds* welds = nullptr,
+                 bool count_dissipation = false) {
   std::array<BodyMotion<double>, kNumContactBodies> motions;
   for (int i = 0; i < kNumContactBodies; ++i) motions[i] = MotionOf(kin, static_cast<ContactBody>(i));
   for (int pair = 0; pair < kNumContactPairs; ++pair) {
@@ -69,8 +70,7 @@ void ForEachPair(const Model& model, const Kinematics& kin, Visit&& visit, const
     const BodyMotion<double>& a = motions[static_cast<int>(spec.a)];
     const BodyMotion<double>& b = motions[static_cast<int>(spec.b)];
     if (!contact_laws::MayTouch(model, spec, a, b)) continue;
-    visit(pair, spec,
-          contact_laws::PairContact<double>(model, pair, a, b));
+    visit(pair, spec, contact_laws::PairContact<double>(model, pair, a, b, count_dissipation));
   }
 }
 
@@ -93,10 +93,13 @@ bool HeldByWeld(const ContactPairSpec& pair, const Welds& welds) {
          ((pair.b == ContactBody::kFootL && welds[kLeft].active) || (pair.b == ContactBody::kFootR && welds[kRight].active));
 }
 
-void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q) {
+void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q,
+                      double* dissipation) {
   // each body's wrench about its reference point, then J^T F + j^T torque
   std::array<Wrench<double>, kNumContactBodies> wrenches{};
+  double power = 0.0;
   const auto add = [&](int, const ContactPairSpec& spec, const PairResult<double>& r) {
+    power += r.report.dissipation;
     Wrench<double>& a = wrenches[static_cast<int>(spec.a)];
     Wrench<double>& b = wrenches[static_cast<int>(spec.b)];
     a.force += r.on_a.force;
@@ -104,7 +107,8 @@ void AddContactForces(const Model& model, const Kinematics& kin, const Welds& we
     b.force += r.on_b.force;
     b.torque += r.on_b.torque;
   };
-  ForEachPair(model, kin, add, &welds);
+  ForEachPair(model, kin, add, &welds, dissipation != nullptr);
+  if (dissipation) *dissipation = power;
   for (int i = 0; i < kNumContactBodies; ++i) {
     const ContactBodyKinematics k = KinematicsOf(kin, static_cast<ContactBody>(i));
     if (!k.point) continue;

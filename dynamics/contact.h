@@ -61,6 +61,12 @@ struct ContactReport {
   bool touching = false;         // some element pushes
   Vec2 force = Vec2::Zero();     // [N] total force on body b
   double energy = 0;             // [J] elastic energy stored
+  // [W] the power its damping and friction take, and a spring that would
+  // pull gives up (Simbody's power loss, which its dissipated energy
+  // integrates); counted only when asked (counts_dissipation), as
+  // AddContactForces asks when its caller wants it
+  double dissipation = 0;
+  bool counts_dissipation = false;
   int elements = 0;              // springs (or Hertz contacts) pushing
 };
 using ContactReports = std::array<ContactReport, kNumContactPairs>;
@@ -72,8 +78,10 @@ ContactReports ReportContacts(const Model& model, const Kinematics& kin);
 // weld"): the authors' weld is exact and takes up whatever pushes the foot.
 bool HeldByWeld(const ContactPairSpec& pair, const Welds& welds);
 
-// Generalized forces of every enabled contact pair, added to Q.
-void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q);
+// Generalized forces of every enabled contact pair, added to Q; and, if
+// asked, the power they dissipate (the pairs' ContactReport::dissipation).
+void AddContactForces(const Model& model, const Kinematics& kin, const Welds& welds, Vec9* Q,
+                      double* dissipation = nullptr);
 
 // Simbody's friction coefficient per unit slip speed, g(s) = mu(s) / s, as a
 // function of the squared slip speed: the friction force is -f_n g v_slip.

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "dynamics/contact.h"
 #include "dynamics/contact_geometry.h"
@@ -102,6 +103,18 @@ double Value(const S& x) {
   }
 }
 
+// The dissipated power (ContactReport::dissipation) is counted when the
+// report asks for it, by the right-hand side's instances alone: the
+// Jacobian's never read it.
+template <typename S>
+bool CountsPower(const ContactReport* r) {
+  if constexpr (std::is_same_v<S, double>) {
+    return r->counts_dissipation;
+  } else {
+    return false;
+  }
+}
+
 // Simbody's quintic step 10x^3 - 15x^4 + 6x^5 on [0, 1]
 template <typename S>
 S Step5(const S& x) {
@@ -143,7 +156,13 @@ bool FoundationNormal(const FoundationLaw& law, double area, const S& d, const S
   const S f_elastic = law.stiffness * area * d;
   r->energy += 0.5 * Value(f_elastic) * Value(d);
   *f_n = f_elastic * (1.0 + law.dissipation * d_rate);
-  if (!(Value(*f_n) > 0.0)) return false;
+  if (!(Value(*f_n) > 0.0)) {
+    // yanking: the elastic force goes, and its power with it
+    if (CountsPower<S>(r)) r->dissipation -= Value(f_elastic) * Value(d_rate);
+    return false;
+  }
+  // Hunt-Crossley's damping: f_elastic c d' at the rate d'
+  if (CountsPower<S>(r)) r->dissipation += Value(f_elastic) * law.dissipation * Value(d_rate) * Value(d_rate);
   r->touching = true;
   ++r->elements;
   return true;
@@ -172,6 +191,7 @@ void MeshOnGround(const FoundationLaw& law, const GroundMesh& mesh, const BodyMo
     const V2<S> point(body.p.x() + r_site.x(), body.p.y() + r_site.y() + lift);
     const S slip = v_site.x() - body.rate * lift;
     const S f_t = -f_n * FrictionPerSlip<S>(law.friction, S(slip * slip)) * slip;
+    if (CountsPower<S>(r)) r->dissipation -= Value(f_t) * Value(slip);
     Push<S>(body, point, V2<S>(f_t, f_n), w);
     r->force += Vec2(Value(f_t), Value(f_n));
   }
@@ -187,11 +207,16 @@ void SphereOnGround(const HertzLaw& law, double radius, const BodyMotion<S>& kne
   const S f_elastic = law.stiffness * x * sqrt(x);
   r->energy += 0.4 * Value(f_elastic) * Value(x);
   const S f_n = f_elastic * (1.0 + 1.5 * law.dissipation * (-knee.v.y()));
-  if (!(Value(f_n) > 0.0)) return;
+  if (!(Value(f_n) > 0.0)) {
+    if (CountsPower<S>(r)) r->dissipation += Value(f_elastic) * Value(knee.v.y());  // yanking: x' = -v_y
+    return;
+  }
+  if (CountsPower<S>(r)) r->dissipation += Value(f_elastic) * 1.5 * law.dissipation * Value(knee.v.y()) * Value(knee.v.y());
   // the force acts above the sphere's lowest point by the sphere's share of the depth
   const V2<S> point(knee.p.x(), knee.p.y() - radius + law.squish * x);
   const S slip = VelocityAt<S>(knee, point).x();
   const S f_t = -f_n * FrictionPerSlip<S>(law.friction, S(slip * slip)) * slip;
+  if (CountsPower<S>(r)) r->dissipation -= Value(f_t) * Value(slip);
   Push<S>(knee, point, V2<S>(f_t, f_n), w);
   r->force += Vec2(Value(f_t), Value(f_n));
   r->touching = true;
@@ -256,7 +281,9 @@ void MeshInBox(const FoundationLaw& law, double scale, const std::vector<BoxSite
     if (!FoundationNormal<S>(law, scale * site.area, depth, d_rate, &f_n, r)) continue;
     const V2<S> v_t = v_rel - d_rate * normal;
     // on the mesh: the push out of the other box and the other box's drag
-    const V2<S> f = f_n * normal + (f_n * FrictionPerSlip<S>(law.friction, S(v_t.squaredNorm()))) * v_t;
+    const S drag = f_n * FrictionPerSlip<S>(law.friction, S(v_t.squaredNorm()));
+    if (CountsPower<S>(r)) r->dissipation += Value(drag) * Value(v_t.squaredNorm());
+    const V2<S> f = f_n * normal + drag * v_t;
     Push<S>(m, point, f, w_m);
     Push<S>(o, point, V2<S>(-f), w_o);
     r->force += report_sign * Vec2(Value(f.x()), Value(f.y()));
@@ -298,7 +325,9 @@ void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites
     // the tangential slip in 3D: |v_t|^2 = |v_rel|^2 - d_rate^2; its part in the plane
     const V2<S> v_t = v_rel - d_rate * normal;
     const S slip_squared = v_rel.squaredNorm() - d_rate * d_rate;
-    const V2<S> f = f_n * normal + (f_n * FrictionPerSlip<S>(law.friction, slip_squared)) * v_t;
+    const S drag = f_n * FrictionPerSlip<S>(law.friction, slip_squared);
+    if (CountsPower<S>(r)) r->dissipation += Value(drag) * Value(slip_squared);
+    const V2<S> f = f_n * normal + drag * v_t;
     Push<S>(m, point, f, w_m);
     Push<S>(k, point, V2<S>(-f), w_k);
     r->force -= Vec2(Value(f.x()), Value(f.y()));  // reported on the knee
@@ -353,8 +382,10 @@ bool MayTouch(const Model& model, const ContactPairSpec& spec, const BodyMotion<
 
 // One pair's wrenches on its bodies a and b (a's motion unused for the ground).
 template <typename S>
-PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, const BodyMotion<S>& b) {
+PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, const BodyMotion<S>& b,
+                          bool count_dissipation = false) {
   PairResult<S> out;
+  out.report.counts_dissipation = count_dissipation;
   const ContactPairSpec& spec = ContactPairs()[pair];
   const BodyParameters& body = model.body;
   const ContactSites& sites = model.sites;

@@ -38,6 +38,7 @@ void MeshOnGround<double>(const FoundationLaw& law, const GroundMesh& mesh, cons
     const double lift = law.squish * depth;
     const double slip = v_site.x() - body.rate * lift;
     const double f_t = -f_n * FrictionPerSlip<double>(law.friction, slip * slip) * slip;
+    if (r->counts_dissipation) r->dissipation -= f_t * slip;
     F += Vec2(f_t, f_n);
     T += rx * f_n - (ry + lift) * f_t;
   }
@@ -89,7 +90,10 @@ void MeshInBox<double>(const FoundationLaw& law, double scale, const std::vector
     if (!FoundationNormal<double>(law, scale * site.area, depth, d_rate, &f_n, r)) continue;
     const Vec2 v_t = v_rel - d_rate * normal;
     // the push out of the other box and the other box's drag
-    const Vec2 f = f_n * normal + (f_n * FrictionPerSlip<double>(law.friction, v_t.squaredNorm())) * v_t;
+    const double slip_squared = v_t.squaredNorm();
+    const double drag = f_n * FrictionPerSlip<double>(law.friction, slip_squared);
+    if (r->counts_dissipation) r->dissipation += drag * slip_squared;
+    const Vec2 f = f_n * normal + drag * v_t;
     F += f;
     T += Cross<double>(point, f);
   }
@@ -134,7 +138,9 @@ void MeshInSphere<double>(const FoundationLaw& law, const std::vector<SphereSite
     // the tangential slip in 3D: |v_t|^2 = |v_rel|^2 - d_rate^2; its part in the plane
     const Vec2 v_t = v_rel - d_rate * normal;
     const double slip_squared = v_rel.squaredNorm() - d_rate * d_rate;
-    const Vec2 f = f_n * normal + (f_n * FrictionPerSlip<double>(law.friction, slip_squared)) * v_t;
+    const double drag = f_n * FrictionPerSlip<double>(law.friction, slip_squared);
+    if (r->counts_dissipation) r->dissipation += drag * slip_squared;
+    const Vec2 f = f_n * normal + drag * v_t;
     F += f;
     T += Cross<double>(point, f);
   }

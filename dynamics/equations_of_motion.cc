@@ -128,7 +128,7 @@ Mat9 MassMatrix(const Model& model, const Vec9& q) {
 }
 
 void GeneralizedForces(const Model& model, const Inputs& inputs, const Kinematics& kin, const Vec9& q,
-                       const Vec9& v, Vec9* Q) {
+                       const Vec9& v, Vec9* Q, double* contact_dissipation) {
   // held joint torques act on the joint coordinates only
   *Q = inputs.joint_torque;
   Q->head<3>().setZero();
@@ -143,7 +143,7 @@ void GeneralizedForces(const Model& model, const Inputs& inputs, const Kinematic
     AddPointMassForces(model.ankle_mass, g, leg.ankle, Q);
   }
 
-  AddContactForces(model, kin, inputs.welds, Q);
+  AddContactForces(model, kin, inputs.welds, Q, contact_dissipation);
   if (model.options.joint_stops) AddJointStopTorques(model, q, v, Q);
 }
 
@@ -151,7 +151,7 @@ bool ForwardDynamics(const Model& model, const Inputs& inputs, const Vec9& q, co
                      Vec9* qdd) {
   ComputeKinematics(model, q, v, &ws->kin);
   MassMatrix(model, ws->kin, &ws->M);
-  GeneralizedForces(model, inputs, ws->kin, q, v, &ws->Q);
+  GeneralizedForces(model, inputs, ws->kin, q, v, &ws->Q, ws->count_dissipation ? &ws->contact_dissipation : nullptr);
 
   // a locked coordinate: its row becomes q''_i = 0
   for (int i = 0; i < kNumCoords; ++i) {

@@ -70,6 +70,10 @@ struct Workspace {
   WeldLdlt<kWeldRowsPerFoot> one_weld_ldlt;
   WeldLdlt<kMaxWeldRows> two_welds_ldlt;
   WeldVector lambda = WeldVector::Zero();
+  // [W] the power the contact dissipated at the last ForwardDynamics, when
+  // asked to count it
+  bool count_dissipation = false;
+  double contact_dissipation = 0;
 
   // For the active welds' R rows: the change of x (M^-1 times a generalized
   // force, or nine of them) that the welds' constraint forces make so that
@@ -96,9 +100,10 @@ struct Workspace {
 void MassMatrix(const Model& model, const Kinematics& kin, Mat9* M);
 Mat9 MassMatrix(const Model& model, const Vec9& q);
 
-// Every generalized force except M q'' (right-hand side of the equations).
+// Every generalized force except M q'' (right-hand side of the equations);
+// and, if asked, the power the contact dissipates (AddContactForces).
 void GeneralizedForces(const Model& model, const Inputs& inputs, const Kinematics& kin, const Vec9& q,
-                       const Vec9& v, Vec9* Q);
+                       const Vec9& v, Vec9* Q, double* contact_dissipation = nullptr);
 
 // Solves M q'' = Q + G^T lambda for q'' with the active welds' constraints
 // G q'' = -G' q' - 2 a G q' - a^2 e (Baumgarte's stabilisation of their

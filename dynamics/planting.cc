@@ -1,6 +1,8 @@
 #include "dynamics/planting.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Cholesky>
 
@@ -159,6 +161,128 @@ bool ProjectFreeBodies(const Model& model, const Welds& welds, FreeBodyState* s)
 bool ProjectOntoWelds(const Model& model, const Welds& welds, State* state) {
   FreeBodyState s = ToFreeBodies(model, *state);
   if (!ProjectFreeBodies(model, welds, &s)) return false;
+  *state = FromFreeBodies(s);
+  return true;
+}
+
+int SimbodyConstraintEquations(const Welds& welds) {
+  int welded = kNumLegs;  // the hips
+  for (const Weld& w : welds) welded += w.active ? 1 : 0;
+  return 6 * welded;
+}
+
+namespace {
+
+// Simbody's RMS of the constraint errors: over its six equations per weld,
+// three of which (out of the plane) hold exactly
+double SimbodyRms(const ConstraintVector& c, const Welds& welds) {
+  return std::sqrt(c.squaredNorm() / SimbodyConstraintEquations(welds));
+}
+
+// Simbody aims a tenth below the tolerance (ProjectOptions' overshoot factor)
+double AimFor(double tolerance) { return std::max(0.1 * tolerance, std::numeric_limits<double>::epsilon()); }
+
+// An integrator's error estimate without the part that the linearised welds
+// J forbid (the vector of least weighted norm with the same image under J),
+// as Simbody projects the error estimate with the state
+void ProjectOut(const ConstraintJacobian& J, const FreeBodyVector& weights, FreeBodyVector* error) {
+  bool ok = false;
+  const FreeBodyVector correction = LeastNorm(J, weights, J * *error, &ok);
+  if (ok) *error -= correction;
+}
+
+}  // namespace
+
+ProjectionOutcome ProjectFreeBodyPositions(const Model& model, const Welds& welds, const SimbodyProjection& how,
+                                           FreeBodyVector* z, FreeBodyVector* error) {
+  ConstraintVector c;
+  ConstraintJacobian J;
+  Constraints(model, welds, *z, &c, &J);
+  const double on_entry = SimbodyRms(c, welds);
+  if (!(on_entry <= how.limit)) return ProjectionOutcome::kFailed;
+  if (on_entry == 0.0 || on_entry <= how.tolerance) return ProjectionOutcome::kUnchanged;
+
+  const FreeBodyVector saved = *z;
+  const FreeBodyVector weights = PositionWeights();
+  double achieved = on_entry, previous = on_entry;
+  ConstraintJacobian J_used;  // the matrix of the last iteration, which projects the error estimate
+  for (int iteration = 1; iteration <= 20; ++iteration) {
+    J_used = J;
+    bool ok = false;
+    const FreeBodyVector dz = LeastNorm(J, weights, c, &ok);
+    if (!ok) return ProjectionOutcome::kFailed;
+    *z -= dz;
+    Constraints(model, welds, *z, &c, &J);
+    achieved = SimbodyRms(c, welds);
+    if (how.local_only && iteration >= 2 && achieved > previous) {
+      // growing: back to the previous iterate, and stop
+      *z += dz;
+      Constraints(model, welds, *z, &c, &J);
+      achieved = SimbodyRms(c, welds);
+      break;
+    }
+    previous = achieved;
+    if (!(achieved > AimFor(how.tolerance))) break;
+  }
+  if (!(achieved <= how.tolerance)) {
+    if (!(achieved < on_entry)) *z = saved;
+    return ProjectionOutcome::kFailed;
+  }
+  if (error) ProjectOut(J_used, weights, error);
+  return ProjectionOutcome::kProjected;
+}
+
+ProjectionOutcome ProjectFreeBodyRates(const Model& model, const Welds& welds, const SimbodyProjection& how,
+                                       const FreeBodyVector& z, FreeBodyVector* u, FreeBodyVector* error) {
+  ConstraintVector c;
+  ConstraintJacobian J;
+  Constraints(model, welds, z, &c, &J);
+  ConstraintVector rate_errors = J * *u;
+  const double on_entry = SimbodyRms(rate_errors, welds);
+  if (!(on_entry <= how.limit)) return ProjectionOutcome::kFailed;
+  if (on_entry == 0.0 || on_entry <= how.tolerance) return ProjectionOutcome::kUnchanged;
+
+  // each rate's change measured relative to the rate where it exceeds 1,
+  // at the rates on entry
+  const FreeBodyVector scale = u->cwiseAbs().cwiseMax(1.0);
+  const FreeBodyVector weights = scale.cwiseProduct(scale);
+  const FreeBodyVector saved = *u;
+  double achieved = on_entry, previous = on_entry;
+  for (int iteration = 1; iteration <= 7; ++iteration) {
+    bool ok = false;
+    const FreeBodyVector du = LeastNorm(J, weights, rate_errors, &ok);
+    if (!ok) return ProjectionOutcome::kFailed;
+    *u -= du;
+    rate_errors = J * *u;
+    achieved = SimbodyRms(rate_errors, welds);
+    if (how.local_only && iteration >= 2 && achieved > previous) {
+      *u += du;
+      rate_errors = J * *u;
+      achieved = SimbodyRms(rate_errors, welds);
+      break;
+    }
+    previous = achieved;
+    if (!(achieved > AimFor(how.tolerance))) break;
+  }
+  if (!(achieved <= how.tolerance) || !u->allFinite()) {
+    if (!(achieved < on_entry)) *u = saved;
+    return ProjectionOutcome::kFailed;
+  }
+  if (error) ProjectOut(J, weights, error);
+  return ProjectionOutcome::kProjected;
+}
+
+bool ProjectOntoWeldsAsSimbody(const Model& model, const Welds& welds, double tolerance, State* state) {
+  SimbodyProjection how;
+  how.tolerance = tolerance;
+  FreeBodyState s = ToFreeBodies(model, *state);
+  if (ProjectFreeBodyPositions(model, welds, how, &s.z) == ProjectionOutcome::kFailed) return false;
+  // the rates at the projected positions: ours are the trunk's and the pins',
+  // the feet's follow from them
+  State moved = FromFreeBodies(s);
+  moved.v = state->v;
+  s = ToFreeBodies(model, moved);
+  if (ProjectFreeBodyRates(model, welds, how, s.z, &s.u) == ProjectionOutcome::kFailed) return false;
   *state = FromFreeBodies(s);
   return true;
 }

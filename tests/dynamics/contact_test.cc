@@ -1,5 +1,6 @@
 #include "dynamics/contact.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -233,6 +234,60 @@ TEST_F(ContactTest, AKneeLeaningOnItsFootIsHeldUp) {
   ASSERT_TRUE(r[kFootKneeL].touching);
   EXPECT_GT(r[kFootKneeL].force.y(), 0.0);
   EXPECT_FALSE(r[kFootKneeR].touching);
+}
+
+// ---- the power contact dissipates (Simbody's power loss) ----
+
+// The same walker without its contact's damping and friction.
+Model WithoutDissipation(Model m) {
+  for (FoundationLaw* law : {&m.laws.mesh_ground, &m.laws.mesh_mesh, &m.laws.mesh_knee}) {
+    law->dissipation = 0.0;
+    law->friction.static_friction = law->friction.dynamic_friction = law->friction.viscous = 0.0;
+  }
+  m.laws.knee_ground.dissipation = 0.0;
+  m.laws.knee_ground.friction.static_friction = m.laws.knee_ground.friction.dynamic_friction = 0.0;
+  return m;
+}
+
+// The dissipated power two ways: summed spring by spring, and as the power
+// of the contact forces less that of their elastic parts alone.
+void ExpectDissipationIsTheNonElasticForcesPower(const Model& m, const State& s, double at_least, const char* what) {
+  SCOPED_TRACE(what);
+  Kinematics kin;
+  ComputeKinematics(m, s.q, s.v, &kin);
+  Vec9 Q = Vec9::Zero(), Q_elastic = Vec9::Zero();
+  double power = -1.0;
+  AddContactForces(m, kin, Welds{}, &Q, &power);
+  AddContactForces(WithoutDissipation(m), kin, Welds{}, &Q_elastic);
+  EXPECT_GE(power, at_least);
+  EXPECT_NEAR(power, -(Q - Q_elastic).dot(s.v), 1e-9 * std::max(1.0, power));
+}
+
+TEST_F(ContactTest, DissipationIsThePowerOfDampingAndFrictionOnEveryPair) {
+  // a trunk sinking and sliding on the ground
+  State s = testing::TrunkAt(model_.body.half_body_y - 1e-3, 0.05);
+  s.v(kX) = 0.4;
+  s.v(kY) = -0.1;
+  s.v(kPitch) = 0.3;
+  ExpectDissipationIsTheNonElasticForcesPower(model_, s, 1.0, "the trunk sinking and sliding on the ground");
+  // pulling out fast: the springs let go, and their elastic energy with them
+  s.v(kY) = 2.0;
+  ExpectDissipationIsTheNonElasticForcesPower(model_, s, 1.0, "the trunk pulled out of the ground");
+  // the self-contacts, moving
+  testing::Posed trunk_knee = testing::KneeInTheTrunk(model_.body, kRight, 3e-3);
+  trunk_knee.state.v.setConstant(0.2);
+  ExpectDissipationIsTheNonElasticForcesPower(trunk_knee.model, trunk_knee.state, 1e-6, "a knee in the trunk");
+  testing::Posed foot_knee = testing::KneeOnItsFoot(model_.body, kLeft, 3e-3);
+  foot_knee.state.v.setConstant(-0.3);
+  ExpectDissipationIsTheNonElasticForcesPower(foot_knee.model, foot_knee.state, 1e-6, "a knee on its foot");
+  State on_foot = testing::TrunkAt(2.0, 0.0);
+  testing::PlaceAnkle(model_, kLeft, Vec2(0.3, -(model_.body.half_foot_y - 1e-3)), &on_foot);
+  on_foot.v(JointIndex(kLeft, kHip)) = 0.5;  // the foot slides under the trunk
+  on_foot.v(JointIndex(kLeft, kAnkle)) = -0.2;
+  ExpectDissipationIsTheNonElasticForcesPower(model_, on_foot, 1e-6, "the trunk on a foot");
+  // at rest nothing dissipates
+  on_foot.v.setZero();
+  ExpectDissipationIsTheNonElasticForcesPower(model_, on_foot, 0.0, "the trunk on a foot at rest");
 }
 
 TEST(JointStopTest, PushesBackOnlyPastTheLimit) {
