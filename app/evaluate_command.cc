@@ -36,6 +36,7 @@ struct EvaluateOptions {
   bool json = false;
   int ensemble = 0;  // 0: no ensemble
   bool force = false;
+  IntegrationChoice integration;
 };
 
 int RunEvaluate(const EvaluateOptions& opt) {
@@ -70,7 +71,8 @@ int RunEvaluate(const EvaluateOptions& opt) {
     };
   }
   if (profile) step_observer = [&profile](const StepInfo& step) { profile->OnStep(step); };
-  const EvaluationResult r = Evaluate(genome, preset, {}, observer, step_observer);
+  const EvaluationSettings settings = opt.integration.Settings();
+  const EvaluationResult r = Evaluate(genome, preset, settings, observer, step_observer);
   if (csv) csv->Close();
   if (!opt.profile_path.empty()) {
     AtomicFileWriter file(opt.profile_path, "the profile file");
@@ -82,7 +84,7 @@ int RunEvaluate(const EvaluateOptions& opt) {
     file.stream() << profile->Summary().dump(2) << "\n";
     file.Commit();
   }
-  const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, opt.ensemble, &r);
+  const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, settings, opt.ensemble, &r);
 
   if (opt.json) {
     const nlohmann::json out = EvaluationToJson(r, opt.ensemble > 0 ? &ensemble : nullptr);
@@ -111,6 +113,7 @@ void AddEvaluateCommand(CLI::App& app, Command* selected) {
   CLI::App* sub = app.add_subcommand("evaluate", "Evaluate a genome: 15 s of walking, scored by paper eq. 6");
   sub->add_option("--genome", opt->genome_path, "Genome file (JSON)")->required()->check(CLI::ExistingFile);
   AddPresetOption(sub, &opt->preset);
+  AddIntegrationOptions(sub, &opt->integration);
   sub->add_option("--trajectory", opt->trajectory_path, "Write the trajectory as CSV, one row per 1/30 s");
   sub->add_option("--profile", opt->profile_path,
                   "Write CVODE's steps as CSV, one row per 1/30 s tick: steps, failures, sizes, the limiting "

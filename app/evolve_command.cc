@@ -16,6 +16,7 @@ struct EvolveOptions {
   std::string scaffold_case;
   std::string learner = DefaultLearner().name;
   std::string preset = "original";
+  IntegrationChoice integration;
   int generations = 4000;
   std::uint64_t seed = 1;
   EvaluatorOptions evaluator;
@@ -29,6 +30,7 @@ int RunEvolve(const EvolveOptions& opt) {
   config.scaffold_case = ScaffoldCaseByName(opt.scaffold_case);
   config.learner = opt.learner;
   config.preset = PresetByName(opt.preset);
+  config.evaluation = opt.integration.Settings();
   config.generations = opt.generations;
   config.seed = opt.seed;
   config.ga = opt.ga;
@@ -64,6 +66,7 @@ void AddEvolveCommand(CLI::App& app, Command* selected) {
       ->check(CLI::IsMember(BuiltInLearnerNames()))
       ->capture_default_str();
   AddPresetOption(sub, &opt->preset);
+  AddIntegrationOptions(sub, &opt->integration);
   sub->add_option("--generations", opt->generations, "Generations to run")
       ->check(IntegerRange(1, kMaxGenerations))
       ->capture_default_str();

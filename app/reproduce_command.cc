@@ -24,6 +24,7 @@ namespace {
 struct ReproduceOptions {
   std::vector<std::string> learners = {DefaultLearner().name};
   std::string preset = "original";
+  IntegrationChoice integration;
   int generations = 4000;
   int replicates = 3;
   EvaluatorOptions evaluator;
@@ -39,6 +40,7 @@ int RunReproduce(const ReproduceOptions& opt) {
   ReproductionConfig config;
   config.learners = opt.learners;
   config.preset = PresetByName(opt.preset);
+  config.evaluation = opt.integration.Settings();
   config.generations = opt.generations;
   config.replicates = opt.replicates;
   config.seed = opt.seed;
@@ -133,6 +135,7 @@ void AddReproduceCommand(CLI::App& app, Command* selected) {
       ->check(CLI::IsMember(BuiltInLearnerNames()))
       ->capture_default_str();
   AddPresetOption(sub, &opt->preset);
+  AddIntegrationOptions(sub, &opt->integration);
   sub->add_option("--generations", opt->generations, "Generations per run")
       ->check(IntegerRange(1, kMaxGenerations))
       ->capture_default_str();

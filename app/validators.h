@@ -15,8 +15,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "control/evaluation.h"
 #include "files/errors.h"
 #include "files/number_text.h"
+#include "integration/integrator.h"
 #include "evolve/run.h"
 
 namespace walkers::app {
@@ -74,6 +76,41 @@ inline CLI::Option* AddSeedOption(CLI::App* sub, std::uint64_t* seed, const std:
   return sub->add_option("--seed", *seed, help)
       ->check(IntegerRange(0, static_cast<long long>(kMaxSeed)))
       ->capture_default_str();
+}
+
+// --integrator, --accuracy and --cut-off: how the evaluations integrate
+// (docs/model.md, "Integration" and "RK-Merson"; docs/fidelity.md, "The cut-off")
+struct IntegrationChoice {
+  std::string integrator = "cvode";
+  double accuracy = 0;  // 0: unset, RK-Merson's own (the authors' 0.05)
+  std::string cut_off;  // empty: the integrator's own (RK-Merson: the authors'); "none"; or right-hand sides
+
+  // The evaluation settings of the choice. Throws std::invalid_argument
+  // naming the option when the options do not go together.
+  EvaluationSettings Settings() const {
+    try {
+      return SettingsOfIntegrator(integrator, accuracy > 0 ? std::optional<double>(accuracy) : std::nullopt,
+                                  cut_off.empty()     ? std::nullopt
+                                  : cut_off == "none" ? std::optional<long>(0)
+                                                      : std::optional<long>(std::stol(cut_off)));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--integrator, --accuracy, --cut-off: ") + e.what());
+    }
+  }
+};
+inline void AddIntegrationOptions(CLI::App* sub, IntegrationChoice* choice) {
+  sub->add_option("--integrator", choice->integrator,
+                  "cvode (accurate; the default) or rk-merson (Simbody's Runge-Kutta-Merson at the authors' "
+                  "settings, with their cut-off: their numerics, on purpose)")
+      ->check(CLI::IsMember({"cvode", "rk-merson"}))
+      ->capture_default_str();
+  sub->add_option("--accuracy", choice->accuracy, "rk-merson's accuracy (default 0.05, the authors')")
+      ->check(FiniteRange(1e-12, 1));
+  sub->add_option("--cut-off", choice->cut_off,
+                  "An evaluation past this many right-hand sides scores -124, as the authors' evolver scored "
+                  "one past 25 s; 'none' turns it off (default: rk-merson's calibrated " +
+                      std::to_string(kAuthorsCutOffRhs) + ", none under cvode)")
+      ->check(CLI::IsMember({"none"}) | IntegerRange(1, 1000000000));
 }
 
 // --force: replace what the output already holds

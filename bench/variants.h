@@ -23,9 +23,9 @@ inline std::vector<Variant> Variants() {
   };
   add("production", [](EvaluationSettings*) {});
   add("library_vector_ops", [](EvaluationSettings* s) { s->integrator.fixed_size_ops = false; });
-  add("adams", [](EvaluationSettings* s) { s->integrator.method = MultistepMethod::kAdams; });
+  add("adams", [](EvaluationSettings* s) { s->integrator.multistep = MultistepMethod::kAdams; });
   add("adams_tolerances_3e-8", [](EvaluationSettings* s) {
-    s->integrator.method = MultistepMethod::kAdams;
+    s->integrator.multistep = MultistepMethod::kAdams;
     s->integrator.relative_tolerance = s->integrator.absolute_tolerance_position = 3e-8;
     s->integrator.absolute_tolerance_velocity = 3e-6;
   });
@@ -47,15 +47,15 @@ inline std::vector<Variant> Variants() {
   add("dense_newton_matrix",
       [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kSchurComplement; });
   add("dense_linear_solver", [](EvaluationSettings* s) { s->integrator.linear_solver = LinearSolver::kDense; });
-  add("restart_every_tick", [](EvaluationSettings* s) { s->integrator.restart_on_torque_change = true; });
+  add("restart_every_tick", [](EvaluationSettings* s) { s->integrator.restart_at_ticks = true; });
   add("restart_every_tick_with_last_step", [](EvaluationSettings* s) {
-    s->integrator.restart_on_torque_change = true;
+    s->integrator.restart_at_ticks = true;
     s->integrator.restart_with_last_step = true;
   });
   add("velocity_atol_3e-6", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 3e-6; });
   add("velocity_atol_3e-6_restart_every_tick", [](EvaluationSettings* s) {
     s->integrator.absolute_tolerance_velocity = 3e-6;
-    s->integrator.restart_on_torque_change = true;
+    s->integrator.restart_at_ticks = true;
   });
   add("velocity_atol_1e-3", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-3; });
   add("velocity_atol_1e-2", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 1e-2; });

@@ -80,7 +80,13 @@ EvaluationSettings EnsembleMemberSettings(const EvaluationSettings& settings, in
   if (offset == 0.0) return member;
   switch (perturbation.kind) {
     case PerturbationKind::kRelativeTolerance:
-      member.integrator.relative_tolerance *= 1.0 + perturbation.step * offset;
+      // the integration's own tolerance: CVODE's relative tolerance, or
+      // RK-Merson's accuracy
+      if (member.integrator.method == IntegrationMethod::kRkMerson) {
+        member.integrator.accuracy *= 1.0 + perturbation.step * offset;
+      } else {
+        member.integrator.relative_tolerance *= 1.0 + perturbation.step * offset;
+      }
       break;
     case PerturbationKind::kStartPose:
       member.start_trunk_raise += perturbation.step * offset;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "control/start_pose.h"
 #include "dynamics/contact.h"
@@ -23,10 +24,37 @@ const char* GaitName(Gait gait) {
   return "none";
 }
 
+EvaluationSettings SettingsOfIntegrator(const std::string& integrator, std::optional<double> accuracy,
+                                        std::optional<long> cut_off_rhs) {
+  EvaluationSettings settings;
+  if (!ParseIntegrationMethod(integrator, &settings.integrator.method)) {
+    throw std::invalid_argument("integrator = \"" + integrator + "\" is none of cvode, rk-merson");
+  }
+  const bool rk_merson = settings.integrator.method == IntegrationMethod::kRkMerson;
+  if (accuracy) {
+    if (!rk_merson) throw std::invalid_argument("the accuracy applies to the rk-merson integrator only");
+    if (!(*accuracy > 0.0 && *accuracy <= 1.0)) {
+      throw std::invalid_argument("accuracy = " + std::to_string(*accuracy) + " is outside its allowed range (0, 1]");
+    }
+    settings.integrator.accuracy = *accuracy;
+  }
+  if (cut_off_rhs && *cut_off_rhs < 0) {
+    throw std::invalid_argument("cut_off = " + std::to_string(*cut_off_rhs) +
+                                " is outside its allowed range [0 (none), 1000000000] right-hand sides");
+  }
+  settings.cut_off_rhs = cut_off_rhs ? *cut_off_rhs : rk_merson ? kAuthorsCutOffRhs : 0;
+  return settings;
+}
+
 EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
                           const TickObserver& observer, const StepObserver& step_observer) {
   const auto wall_start = std::chrono::steady_clock::now();
-  const Model model = BuildModel(BodyOf(genome), ModelOptions{}, settings.contact, settings.weld);
+  const bool rk_merson = settings.integrator.method == IntegrationMethod::kRkMerson;
+  // Simbody's welds are exact at the level of accelerations and projected
+  // after every step; CVODE's path holds them by Baumgarte's stabilisation
+  WeldParameters welds = settings.weld;
+  if (rk_merson) welds.stabilization = 0.0;
+  const Model model = BuildModel(BodyOf(genome), ModelOptions{}, settings.contact, welds);
   const State start = StartState(model, settings.start_trunk_raise);
 
   WalkingController controller(genome, model, preset);
@@ -65,24 +93,38 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
   // the state onto every active weld, as the authors' program calls
   // project() after enabling one
   const auto hold = [&](const Inputs& inputs) {
-    bool weld_added = false;
+    bool weld_added = false, welds_switched = false;
     for (int leg = 0; leg < kNumLegs; ++leg) {
-      weld_added = weld_added || (inputs.welds[leg].active && !SameWeld(inputs.welds[leg], integrator.inputs().welds[leg]));
+      const bool same = SameWeld(inputs.welds[leg], integrator.inputs().welds[leg]);
+      welds_switched = welds_switched || !same;
+      weld_added = weld_added || (inputs.welds[leg].active && !same);
     }
     if (weld_added && settings.project_on_plant) {
       State projected = integrator.state();
-      if (!ProjectOntoWelds(model, inputs.welds, &projected)) {
+      // the authors' System::project at its default tolerance under their
+      // integrator; onto the welds exactly under CVODE
+      const bool projected_ok = rk_merson ? ProjectOntoWeldsAsSimbody(model, inputs.welds, kSimbodyProjectTolerance,
+                                                                      &projected)
+                                          : ProjectOntoWelds(model, inputs.welds, &projected);
+      if (!projected_ok) {
         result.failure = "projection onto the welds did not converge at t=" + std::to_string(integrator.time());
         return false;
       }
       integrator.SetState(projected);
     }
-    integrator.SetInputs(inputs);
+    // the jumps the controller makes: welds switched, new torques
+    if (welds_switched) integrator.SetWelds(inputs.welds);
+    if (inputs.joint_torque != integrator.inputs().joint_torque) integrator.SetTorques(inputs.joint_torque);
     return true;
   };
   const auto advance = [&](long k) {
     const IntegrationStatus status = integrator.AdvanceTo(k / kControlRate);
     if (!status.ok()) result.failure = status.reason;
+    // the authors' evolver scored an evaluation past its wall-clock limit -124
+    if (status.ok() && settings.cut_off_rhs > 0 && integrator.stats().rhs_evals > settings.cut_off_rhs) {
+      result.cut_off = true;
+      return false;
+    }
     return status.ok();
   };
   for (long k = 0; k < ticks;) {
@@ -107,7 +149,8 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
     if (observer) observer(t, integrator.state(), controller);
     if (!advance(++k)) break;
   }
-  if (!result.fell && result.failure.empty()) {
+  const bool scored = !result.fell && result.failure.empty() && !result.cut_off;
+  if (scored) {
     ComputeKinematics(model, integrator.state().q, integrator.state().v, &kin);
     result.distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
   }
@@ -117,11 +160,12 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
   result.footsteps = controller.footsteps();
   result.trunk_contact_fraction =
       ticks_after_lock > 0 ? static_cast<double>(ticks_in_contact) / static_cast<double>(ticks_after_lock) : 0.0;
-  result.gait = result.fell || !result.failure.empty() ? Gait::kNone
+  result.gait = !scored                                                    ? Gait::kNone
                 : result.trunk_contact_fraction >= kTripodContactFraction ? Gait::kTripod
                                                                            : Gait::kBiped;
-  result.fitness = result.fell || !result.failure.empty() ? -1.0 : result.distance / result.leg_length;
+  result.fitness = result.cut_off ? kCutOffFitness : scored ? result.distance / result.leg_length : -1.0;
 
+  result.integrator = settings.integrator.method;
   result.integrator_stats = integrator.stats();
   result.cvode_steps = result.integrator_stats.steps;
   result.rhs_evals = result.integrator_stats.rhs_evals;

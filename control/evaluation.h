@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "control/genome.h"
@@ -23,9 +24,29 @@ const char* GaitName(Gait gait);
 // ticks after the lock is a tripod (docs/model.md gives the reasons).
 constexpr double kTripodContactFraction = 0.10;
 
+// The fitness of an evaluation cut off for taking too long, as the authors'
+// evolver scored every evaluation past 25 s of wall clock (their
+// evolution/newEvolver2.py); it sorts below every fall.
+constexpr double kCutOffFitness = -124.0;
+
+// The authors' cut-off of 25 s of wall clock on their machine, in
+// right-hand sides of RK-Merson at their accuracy: their program's time
+// grows with its right-hand sides, and this budget cuts off case 1's early
+// children as often as theirs were cut off (docs/fidelity.md, "The cut-off").
+constexpr long kAuthorsCutOffRhs = 128000;
+
+// System::project's default tolerance, at which the authors' program
+// projects onto the welds at a touchdown (docs/model.md, "RK-Merson").
+constexpr double kSimbodyProjectTolerance = 1e-4;
+
 struct EvaluationSettings {
   double duration = 15.0;  // [s]
   IntegratorSettings integrator;
+  // An evaluation whose integration takes more right-hand sides than this
+  // stops and scores kCutOffFitness: the authors' 25 s cut-off in units
+  // that do not depend on the machine (docs/fidelity.md, "The cut-off").
+  // 0: no cut-off.
+  long cut_off_rhs = 0;
   ContactParameters contact;
   WeldParameters weld;
   // Switching a weld on projects the state onto the active welds as the
@@ -38,11 +59,20 @@ struct EvaluationSettings {
   double start_trunk_raise = 0.0;
 };
 
+// The evaluation settings of an integrator by its name ("cvode",
+// "rk-merson"): its accuracy (RK-Merson's; none: the authors' 0.05) and its
+// cut-off in right-hand sides (none: the integrator's own, the authors'
+// kAuthorsCutOffRhs under RK-Merson and none under CVODE; 0: none). Throws
+// std::invalid_argument naming what does not fit.
+EvaluationSettings SettingsOfIntegrator(const std::string& integrator, std::optional<double> accuracy = std::nullopt,
+                                        std::optional<long> cut_off_rhs = std::nullopt);
+
 struct EvaluationResult {
-  double fitness = -1;         // paper eq. (6): distance / leg length; -1 for a fall or a failure
+  double fitness = -1;         // paper eq. (6): distance / leg length; -1 for a fall or a failure, -124 cut off
   double distance = 0;         // [m] min(x_footL, x_footR) when the evaluation ended
   double leg_length = 0;       // [m] tibia + femur
   bool fell = false;
+  bool cut_off = false;        // stopped past EvaluationSettings::cut_off_rhs: fitness kCutOffFitness
   std::string failure;         // integration failure's reason, empty if none
   int footsteps = 0;           // touchdowns
   double trunk_contact_fraction = 0;  // of the 30 Hz ticks after the lock
@@ -51,7 +81,8 @@ struct EvaluationResult {
   double wall_ms = 0;          // [ms] wall time (not deterministic)
   long cvode_steps = 0;
   long rhs_evals = 0;
-  IntegratorStats integrator_stats;  // every CVODE counter
+  IntegrationMethod integrator = IntegrationMethod::kCvode;  // the method that integrated it
+  IntegratorStats integrator_stats;  // every counter of the integrator
   double max_weld_drift = 0;   // [m] furthest a planted foot's centre moved from its weld, at ticks
   std::string preset;
 };

@@ -9,6 +9,7 @@ nlohmann::json EvaluationToJson(const EvaluationResult& r, const FitnessEnsemble
                         {"distance", r.distance},
                         {"leg_length", r.leg_length},
                         {"fell", r.fell},
+                        {"cut_off", r.cut_off},
                         {"failure", nullptr},
                         {"footsteps", r.footsteps},
                         {"trunk_contact_fraction", r.trunk_contact_fraction},
@@ -17,6 +18,7 @@ nlohmann::json EvaluationToJson(const EvaluationResult& r, const FitnessEnsemble
                         {"wall_ms", r.wall_ms},
                         {"cvode_steps", r.cvode_steps},
                         {"rhs_evals", r.rhs_evals},
+                        {"integrator", IntegrationMethodName(r.integrator)},
                         {"preset", r.preset}};
   if (!r.failure.empty()) out["failure"] = r.failure;
   if (ensemble) {

@@ -232,6 +232,13 @@ void Reproduction::Run(Evaluator& evaluator, const ReproductionObserver& observe
 
 namespace {
 
+// The finals' re-scores and walks measure how far a walker walks: without
+// the cut-off that the runs' evaluations had
+EvaluationSettings Uncut(EvaluationSettings settings) {
+  settings.cut_off_rhs = 0;
+  return settings;
+}
+
 // A finalist for reproduction.json: {"id", "fitness" (recorded), "gait", "rescore"}
 json FinalistJson(const Individual& finalist, const RescoreCache& rescores) {
   return {{"id", finalist.id()},
@@ -262,7 +269,7 @@ void WriteReproductionData(const ReproductionConfig& config, const std::string& 
     }
   }
   // every run's three finals again, but those re-scored before
-  RescoreCache rescores(files.rescores, config.preset, config.evaluation, config.ensemble);
+  RescoreCache rescores(files.rescores, config.preset, Uncut(config.evaluation), config.ensemble);
   rescores.Rescore(genomes, evaluator, std::max(1, evaluator.slots()), on_rescore);
 
   const std::string& primary = config.learners.front();
@@ -311,7 +318,8 @@ void WriteReproductionData(const ReproductionConfig& config, const std::string& 
     if (!*best) continue;
     const auto& [run, who] = **best;
     RecordedWalk walk =
-        RecordWalk(who.genome, config.preset, std::string("best ") + key + ": " + run + " " + who.id(), config.evaluation);
+        RecordWalk(who.genome, config.preset, std::string("best ") + key + ": " + run + " " + who.id(),
+                   Uncut(config.evaluation));
     walk.json["run"] = run;
     walk.json["id"] = who.id();
     walks[key] = walk.json;

@@ -33,7 +33,10 @@ const EvaluationField kEvaluationFields[] = {
     {"weld_depth", {0, 0.1}, [](EvaluationSettings* e) { return &e->weld.depth; }},
     {"weld_stabilization", {0, 1e6, true}, [](EvaluationSettings* e) { return &e->weld.stabilization; }},
 };
-constexpr int kMaxBdfOrder = 5;  // CVODE's BDF, the method of every run
+constexpr int kMaxBdfOrder = 5;  // CVODE's BDF
+// the integrator's keys, present in runs that are not CVODE's without a cut-off
+constexpr const char* kIntegratorKeys[] = {"integrator", "accuracy", "constraint_tolerance", "cut_off_rhs"};
+constexpr long kMaxCutOffRhs = 1000000000;
 
 double Of(const EvaluationField& field, const EvaluationSettings& settings) {
   return *field.of(const_cast<EvaluationSettings*>(&settings));
@@ -61,8 +64,17 @@ void RunConfig::Validate(const std::string& source) const {
 
 json EvaluationSettingsToJson(const EvaluationSettings& settings) {
   json evaluation = {{"max_order", settings.integrator.max_order},
-                     {"restart_at_ticks", settings.integrator.restart_on_torque_change}};
+                     {"restart_at_ticks", settings.integrator.restart_at_ticks}};
   for (const EvaluationField& field : kEvaluationFields) evaluation[field.key] = Of(field, settings);
+  // the integrator and the cut-off, written when they are not CVODE's and
+  // none (files without them are CVODE's runs)
+  const IntegratorSettings& integrator = settings.integrator;
+  if (integrator.method != IntegrationMethod::kCvode || settings.cut_off_rhs != 0) {
+    evaluation["integrator"] = IntegrationMethodName(integrator.method);
+    evaluation["accuracy"] = integrator.accuracy;
+    evaluation["constraint_tolerance"] = integrator.constraint_tolerance;
+    evaluation["cut_off_rhs"] = settings.cut_off_rhs;
+  }
   return evaluation;
 }
 
@@ -116,10 +128,20 @@ RunConfig RunConfigFromJson(const json& j, const std::string& source) {
   c.ga.mutation_children = IntField(f, "mutation_children");
   c.ga.mutation_probability = f.Number("mutation_probability");
   const JsonFields e = f.Object("evaluation");
-  e.RequireOnly(KeysOf(keys.at("evaluation")));
+  std::vector<std::string> evaluation_keys = KeysOf(keys.at("evaluation"));
+  for (const char* key : kIntegratorKeys) evaluation_keys.push_back(key);
+  e.RequireOnly(evaluation_keys);
   for (const EvaluationField& field : kEvaluationFields) *field.of(&c.evaluation) = e.Number(field.key, field.range);
   c.evaluation.integrator.max_order = static_cast<int>(e.Integer("max_order", 1, kMaxBdfOrder));
-  c.evaluation.integrator.restart_on_torque_change = e.Bool("restart_at_ticks");
+  c.evaluation.integrator.restart_at_ticks = e.Bool("restart_at_ticks");
+  if (j.at("evaluation").contains("integrator")) {
+    IntegratorSettings& integrator = c.evaluation.integrator;
+    const std::string method = e.OneOf("integrator", {"cvode", "rk-merson"});
+    ParseIntegrationMethod(method, &integrator.method);
+    integrator.accuracy = e.Number("accuracy", {0, 1, true});
+    integrator.constraint_tolerance = e.Number("constraint_tolerance", {0, 1, true});
+    c.evaluation.cut_off_rhs = e.Integer("cut_off_rhs", 0, kMaxCutOffRhs);
+  }
   c.Validate(source);
   return c;
 }

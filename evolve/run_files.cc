@@ -128,6 +128,8 @@ Individual IndividualFromJson(const JsonFields& f, int generations, int populati
   r.fitness = f.Number("fitness");
   r.distance = f.Number("distance");
   r.fell = f.Bool("fell");
+  // a cut-off is its fitness (control/evaluation.h)
+  r.cut_off = r.fitness == kCutOffFitness;
   r.gait = GaitFromName(f, "gait");
   r.footsteps = static_cast<int>(f.Integer("footsteps", 0, std::numeric_limits<int>::max()));
   r.trunk_contact_fraction = f.Number("trunk_contact_fraction", {0.0, 1.0});

@@ -47,17 +47,40 @@ py::array_t<double> GeneColumn(Field field) {
 
 // ---- evaluations ----
 
-py::dict Evaluate1(const py::handle& genome_object, const std::string& preset_name, std::optional<int> ensemble_size) {
+// The settings of integrator=, accuracy= and cut_off= (None: the
+// integrator's own; "none" or a number of right-hand sides), as --integrator,
+// --accuracy and --cut-off make them; bad values as ValueError.
+EvaluationSettings SettingsOf(const std::string& integrator, std::optional<double> accuracy,
+                              const py::handle& cut_off) {
+  std::optional<long> rhs;
+  if (py::isinstance<py::str>(cut_off)) {
+    if (cut_off.cast<std::string>() != "none") {
+      throw py::value_error("cut_off = \"" + cut_off.cast<std::string>() + "\": none, \"none\" or right-hand sides");
+    }
+    rhs = 0;
+  } else if (!cut_off.is_none()) {
+    rhs = cut_off.cast<long>();
+  }
+  try {
+    return SettingsOfIntegrator(integrator, accuracy, rhs);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
+}
+
+py::dict Evaluate1(const py::handle& genome_object, const std::string& preset_name, std::optional<int> ensemble_size,
+                   const std::string& integrator, std::optional<double> accuracy, const py::handle& cut_off) {
   const Genome genome = GenomeOf(genome_object, "genome");
   const Preset preset = PresetByName(preset_name);
   if (ensemble_size) RequireInRange("ensemble", *ensemble_size, 1, kMaxEnsemble);
+  const EvaluationSettings settings = SettingsOf(integrator, accuracy, cut_off);
   nlohmann::json out;
   {
     py::gil_scoped_release no_gil;
     // as `walkers evaluate --json [--ensemble N]`: the ensemble's middle member is this evaluation
-    const EvaluationResult result = Evaluate(genome, preset);
+    const EvaluationResult result = Evaluate(genome, preset, settings);
     if (ensemble_size) {
-      const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, {}, *ensemble_size, &result);
+      const FitnessEnsemble ensemble = EvaluateEnsemble(genome, preset, settings, *ensemble_size, &result);
       out = EvaluationToJson(result, &ensemble);
     } else {
       out = EvaluationToJson(result);
@@ -84,9 +107,11 @@ py::dict RecordWalk1(const py::handle& genome_object, const std::string& preset_
   return out;
 }
 
-py::dict EvaluateBatch(const py::handle& genomes_object, const std::string& preset_name, std::optional<int> threads) {
+py::dict EvaluateBatch(const py::handle& genomes_object, const std::string& preset_name, std::optional<int> threads,
+                       const std::string& integrator, std::optional<double> accuracy, const py::handle& cut_off) {
   const DoubleArray rows = GeneRows(genomes_object, "genomes");
   const Preset preset = PresetByName(preset_name);
+  const EvaluationSettings settings = SettingsOf(integrator, accuracy, cut_off);
   const int slots = ThreadsOrEveryCore(threads);
 
   // every row validated before any is evaluated
@@ -100,7 +125,6 @@ py::dict EvaluateBatch(const py::handle& genomes_object, const std::string& pres
   std::vector<EvaluationResult> results(n);
   {
     py::gil_scoped_release no_gil;
-    const EvaluationSettings settings;
     std::vector<EvaluationTask> tasks(n);
     for (py::ssize_t i = 0; i < n; ++i) tasks[i] = {&genomes[i], &preset, &settings, &results[i]};
     ThreadPool(slots)->EvaluateAll(tasks);
@@ -154,9 +178,12 @@ PYBIND11_MODULE(walkers, m) {
       py::arg("genome"), "A genome's 18 genes in the order of gene_names (the fixed masses left out)");
 
   m.def("evaluate", &Evaluate1, py::arg("genome"), py::arg("preset") = "original", py::arg("ensemble") = py::none(),
-        "One 15 s evaluation: the fields of `walkers evaluate --json`, with an ensemble of N as --ensemble N");
+        py::arg("integrator") = "cvode", py::arg("accuracy") = py::none(), py::arg("cut_off") = py::none(),
+        "One 15 s evaluation: the fields of `walkers evaluate --json`, with an ensemble of N as --ensemble N; "
+        "integrator, accuracy and cut_off as --integrator, --accuracy and --cut-off");
   m.def("evaluate_batch", &EvaluateBatch, py::arg("genomes"), py::arg("preset") = "original",
-        py::arg("threads") = py::none(),
+        py::arg("threads") = py::none(), py::arg("integrator") = "cvode", py::arg("accuracy") = py::none(),
+        py::arg("cut_off") = py::none(),
         "Evaluates an (n, 18) array, one genome per row, on `threads` threads (default: every core); "
         "returns arrays of fitness, gait, fell, footsteps and cvode_steps");
 

@@ -14,7 +14,9 @@ docs/fidelity.md.
       genome files of every run's best biped and best tripod in a reproduction's folder
       (DIR/<run>/finals.json, as `walkers reproduce` writes it): our finals in their program
   compare_authors.py run --authors REPO --genomes DIR [--ensemble 25] [--jobs 2] [--json OUT] [--markdown OUT]
-      build their program if needed, evaluate every genome in both, print the table
+                         [--integrator cvode|rk-merson ...] [--accuracy A]
+      build their program if needed, evaluate every genome in both, print the table (ours under each
+      --integrator given, side by side; cvode by default)
       (--authors-binary PROGRAM instead of --authors: their program, already built;
       --timeout S: how long to wait for their fitness of one genome, 300 s by default)
 
@@ -232,9 +234,14 @@ def run_authors_once(binary, genome, timeout_s):
 
 # ---- ours ----
 
-def run_ours(walkers, genome_path, ensemble, preset):
-    p = subprocess.run([str(walkers), "evaluate", "--genome", str(genome_path), "--ensemble", str(ensemble),
-                        "--preset", preset, "--json"], capture_output=True, text=True)
+def run_ours(walkers, genome_path, ensemble, preset, integrator="cvode", accuracy=None):
+    """`walkers evaluate --ensemble N --json` under one of our integrators, without the cut-off:
+    their program is waited for as long as --timeout says."""
+    command = [str(walkers), "evaluate", "--genome", str(genome_path), "--ensemble", str(ensemble),
+               "--preset", preset, "--json", "--integrator", integrator, "--cut-off", "none"]
+    if accuracy is not None and integrator == "rk-merson":
+        command += ["--accuracy", repr(accuracy)]
+    p = subprocess.run(command, capture_output=True, text=True)
     if p.returncode != 0:
         raise ToolError(f"walkers evaluate on {genome_path} failed: {p.stderr.strip()}")
     return json.loads(p.stdout)
@@ -247,25 +254,45 @@ def spearman(xs, ys):
     return float(stats.spearmanr(xs, ys).statistic)
 
 
-def summarise(rows):
+# A genome whose fitness differs by more than this factor between the programs, or that walks
+# (fitness above 0) in one and not in the other, is an outlier.
+OUTLIER_FACTOR = 1.5
+
+
+def outlier(ours, theirs):
+    if ours > 0 and theirs > 0:
+        return max(ours / theirs, theirs / ours) > OUTLIER_FACTOR
+    return (ours > 0) != (theirs > 0)
+
+
+def ours_under(row, integrator):
+    """A row's results under one of our integrators (the first one's are the row's own fields)."""
+    return row["by_integrator"][integrator] if integrator else row
+
+
+def summarise(rows, integrator=None):
     both = [r for r in rows if r["authors"] is not None]
-    ratios = [r["ours_median"] / r["authors"] for r in both if r["authors"] > 0]
-    tripods = [r for r in both if r["ours_tripods"] * 2 > r["ensemble"]]
+    ours = {r["genome"]: ours_under(r, integrator) for r in rows}
+    ratios = [ours[r["genome"]]["ours_median"] / r["authors"] for r in both if r["authors"] > 0]
+    tripods = [r for r in both if ours[r["genome"]]["ours_tripods"] * 2 > r["ensemble"]]
     # how many times faster ours is, per genome: one evaluation of each, the
     # same machine and run (theirs includes their process's start-up)
-    speedups = [r["authors_ms"] / r["ours_ms"] for r in both if r.get("authors_ms") and r.get("ours_ms")]
+    speedups = [r["authors_ms"] / ours[r["genome"]]["ours_ms"] for r in both
+                if r.get("authors_ms") and ours[r["genome"]].get("ours_ms")]
+    medians = [ours[r["genome"]]["ours_median"] for r in both]
     return {
         "genomes": len(rows),
         "compared": len(both),
-        "spearman": spearman([r["authors"] for r in both], [r["ours_median"] for r in both]) if len(both) > 2 else None,
+        "spearman": spearman([r["authors"] for r in both], medians) if len(both) > 2 else None,
         "median_ratio": statistics.median(ratios) if ratios else None,
-        "median_abs_difference": statistics.median(abs(r["ours_median"] - r["authors"]) for r in both) if both else None,
+        "median_abs_difference": statistics.median(abs(m - r["authors"]) for m, r in zip(medians, both)) if both else None,
+        "beyond_factor": sum(outlier(m, r["authors"]) for m, r in zip(medians, both)),
         "tripods": len(tripods),
         "median_speedup": statistics.median(speedups) if speedups else None,
     }
 
 
-def summarise_final_bests(rows, origins):
+def summarise_final_bests(rows, origins, integrator=None):
     """The summary over the runs' final bests alone (what the claims use), and by case the
     mean fitness of those compared in both programs; None unless origin.csv is `finals`'."""
     final = {o["file"][:-5]: o["case"] for o in origins if o.get("final_best") == "yes"}
@@ -279,8 +306,9 @@ def summarise_final_bests(rows, origins):
         both = [r for r in finals if final[r["genome"]] == case and r["authors"] is not None]
         by_case[case] = {"compared": len(both),
                          "theirs_mean": statistics.mean(r["authors"] for r in both) if both else None,
-                         "ours_mean": statistics.mean(r["ours_median"] for r in both) if both else None}
-    return dict(summarise(finals), by_case=by_case)
+                         "ours_mean": statistics.mean(ours_under(r, integrator)["ours_median"] for r in both)
+                         if both else None}
+    return dict(summarise(finals, integrator), by_case=by_case)
 
 
 def origin_rows(genome_dir):
@@ -329,6 +357,8 @@ def run(args):
         raise ToolError(f"{args.genomes}: no genome files (*.json)")
     if not args.timeout > 0:
         raise ToolError(f"--timeout {args.timeout}: must be a number of seconds above 0")
+    if args.accuracy is not None and not 0 < args.accuracy <= 1:
+        raise ToolError(f"--accuracy {args.accuracy}: must lie in (0, 1]")
     walkers = pathlib.Path(args.walkers)
     if not walkers.is_file():
         raise ToolError(f"{walkers}: not found (build the project first: scripts/build.sh)")
@@ -341,15 +371,12 @@ def run(args):
             raise ToolError("give --authors (a checkout of their repository) or --authors-binary")
         binary = build_authors(args.authors, args.build_dir)
 
-    def one(path):
-        genome = json.loads(path.read_text())
-        authors, note, seconds = run_authors(binary, genome, args.timeout)
-        ours = run_ours(walkers, path, args.ensemble, args.preset)
+    integrators = list(dict.fromkeys(args.integrator or ["cvode"]))
+
+    def ours_fields(path, integrator):
+        ours = run_ours(walkers, path, args.ensemble, args.preset, integrator, args.accuracy)
         e = ours["ensemble"]
         return {
-            "genome": path.stem,
-            "authors": authors,
-            "authors_note": note,
             "ours": ours["fitness"],
             "ours_median": e["fitness_median"],
             "ours_min": e["fitness_min"],
@@ -358,8 +385,15 @@ def run(args):
             "ours_falls": e["falls"],
             "ensemble": e["size"],
             "ours_ms": ours["wall_ms"],
-            "authors_ms": 1000.0 * seconds,
         }
+
+    def one(path):
+        genome = json.loads(path.read_text())
+        authors, note, seconds = run_authors(binary, genome, args.timeout)
+        by_integrator = {integrator: ours_fields(path, integrator) for integrator in integrators}
+        # the first integrator's results are the row's own
+        return dict(by_integrator[integrators[0]], genome=path.stem, authors=authors, authors_note=note,
+                    authors_ms=1000.0 * seconds, integrator=integrators[0], by_integrator=by_integrator)
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         rows = list(pool.map(one, genomes))
@@ -373,25 +407,32 @@ def run(args):
         print(f"{r['genome']:<{name_width}}  {theirs:>7}  {r['ours_median']:>7.2f}  {ratio:>6}  "
               f"{r['ours_min']:>6.2f}  {r['ours_max']:>6.2f}  {r['ours_tripods']:>3}/{r['ensemble']:<2}  "
               f"{r['ours_falls']:>4}  {r['authors_note']}")
-    s = summarise(rows)
     fmt = lambda v: "—" if v is None else f"{v:.3f}"
-    print(f"\n{s['compared']} of {s['genomes']} compared: Spearman {fmt(s['spearman'])}, median ratio ours/theirs "
-          f"{fmt(s['median_ratio'])}, median |ours - theirs| {fmt(s['median_abs_difference'])}, "
-          f"{s['tripods']} classed tripods (ensemble majority); ours a median {fmt(s['median_speedup'])} times faster "
-          f"per evaluation")
     origins = origin_rows(args.genomes)
-    final = summarise_final_bests(rows, origins)
-    if final:
-        print(f"the runs' final bests: {final['compared']} of {final['genomes']} compared: Spearman "
-              f"{fmt(final['spearman'])}, median ratio ours/theirs {fmt(final['median_ratio'])}; mean fitness of "
-              "those compared, theirs against ours: " + ", ".join(
-                  f"{case} {fmt(c['theirs_mean'])} against {fmt(c['ours_mean'])} ({c['compared']})"
-                  for case, c in final["by_case"].items()))
+    summaries, finals = {}, {}
+    for integrator in integrators:
+        s = summaries[integrator] = summarise(rows, integrator)
+        print(f"\n{integrator}: {s['compared']} of {s['genomes']} compared: Spearman {fmt(s['spearman'])}, median "
+              f"ratio ours/theirs {fmt(s['median_ratio'])}, median |ours - theirs| {fmt(s['median_abs_difference'])}, "
+              f"{s['beyond_factor']} beyond a factor {OUTLIER_FACTOR:g}, {s['tripods']} classed tripods (ensemble "
+              f"majority); ours a median {fmt(s['median_speedup'])} times faster per evaluation")
+        final = finals[integrator] = summarise_final_bests(rows, origins, integrator)
+        if final:
+            print(f"{integrator}: the runs' final bests: {final['compared']} of {final['genomes']} compared: Spearman "
+                  f"{fmt(final['spearman'])}, median ratio ours/theirs {fmt(final['median_ratio'])}, "
+                  f"{final['beyond_factor']} beyond a factor {OUTLIER_FACTOR:g}; mean fitness of those compared, "
+                  "theirs against ours: " + ", ".join(
+                      f"{case} {fmt(c['theirs_mean'])} against {fmt(c['ours_mean'])} ({c['compared']})"
+                      for case, c in final["by_case"].items()))
     if args.markdown:
         write_new(args.markdown, markdown_table(rows, recorded_fitness(origins), args.timeout), args.force)
     if args.json:
-        write_new(args.json, json.dumps({"summary": s, "final_bests": final, "rows": rows, "ensemble": args.ensemble,
-                                         "preset": args.preset}, indent=1) + "\n", args.force)
+        first = integrators[0]
+        write_new(args.json, json.dumps({"summary": summaries[first], "final_bests": finals[first],
+                                         "summaries": summaries, "final_bests_by_integrator": finals,
+                                         "rows": rows, "ensemble": args.ensemble, "preset": args.preset,
+                                         "integrators": integrators, "accuracy": args.accuracy},
+                                        indent=1) + "\n", args.force)
 
 
 def main():
@@ -413,6 +454,10 @@ def main():
     r.add_argument("--build-dir", default=os.path.expanduser("~/.cache/walkers/authors-build"))
     r.add_argument("--walkers", default=str(ROOT / "build" / "app" / "walkers"))
     r.add_argument("--ensemble", type=int, default=25)
+    r.add_argument("--integrator", action="append", choices=["cvode", "rk-merson"],
+                   help="our integrator (again for another, side by side; default cvode); ours run "
+                        "without the cut-off")
+    r.add_argument("--accuracy", type=float, help="rk-merson's accuracy (default 0.05, the authors')")
     r.add_argument("--preset", default="original")
     r.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     r.add_argument("--timeout", type=float, default=AUTHORS_TIMEOUT_S,

@@ -41,8 +41,11 @@ rows=$(($(wc -l <"$tmp/t.csv") - 1))
 expect 0 '"failure":null' -- simulate --genome "$genome" --duration 0.1 --passive
 
 # evaluate: the JSON keys of the issue, and a trajectory with the controller's columns
-expect 0 '^\{"cvode_steps":[0-9]+,"distance":[-0-9.e]+,"failure":null,"fell":false,"fitness":[-0-9.e]+,"footsteps":[0-9]+,"gait":"(biped|tripod)","leg_length":[0-9.]+,"preset":"original","rhs_evals":[0-9]+,"sim_time":15(\.0)?,"trunk_contact_fraction":[0-9.e-]+,"wall_ms":[0-9.e+-]+\}$' -- \
+expect 0 '^\{"cut_off":false,"cvode_steps":[0-9]+,"distance":[-0-9.e]+,"failure":null,"fell":false,"fitness":[-0-9.e]+,"footsteps":[0-9]+,"gait":"(biped|tripod)","integrator":"cvode","leg_length":[0-9.]+,"preset":"original","rhs_evals":[0-9]+,"sim_time":15(\.0)?,"trunk_contact_fraction":[0-9.e-]+,"wall_ms":[0-9.e+-]+\}$' -- \
   evaluate --genome "$genome" --json --trajectory "$tmp/e.csv"
+# the authors' integrator, and their cut-off set low enough to cut the initial individual off
+expect 0 '"integrator":"rk-merson"' -- evaluate --genome "$genome" --json --integrator rk-merson --accuracy 0.04
+expect 0 '"cut_off":true,.*"fitness":-124' -- evaluate --genome "$genome" --json --integrator rk-merson --cut-off 2000
 header=$(head -1 "$tmp/e.csv")
 [[ $header == t,x,y,*,kinetic,potential,trunk_contact,state,x_target ]] ||
   { echo "FAIL: evaluate trajectory header: $header"; failures=$((failures + 1)); }
@@ -139,6 +142,11 @@ expect nonzero 'duration' -- simulate --genome "$genome" --duration nan
 expect nonzero 'genome' -- simulate --genome "$tmp/absent.json" --duration 1
 expect nonzero 'cannot write the trajectory' -- simulate --genome "$genome" --duration 0.1 --trajectory "$tmp/no/such/dir/t.csv"
 expect nonzero 'preset.*(paper|original)' -- evaluate --genome "$genome" --preset authors
+expect nonzero 'integrator.*(cvode|rk-merson)' -- evaluate --genome "$genome" --integrator euler
+expect nonzero 'accuracy applies to the rk-merson integrator only' -- evaluate --genome "$genome" --accuracy 0.01
+expect nonzero 'accuracy' -- evaluate --genome "$genome" --integrator rk-merson --accuracy 2
+expect nonzero 'cut-off' -- evaluate --genome "$genome" --integrator rk-merson --cut-off soon
+expect nonzero 'accuracy applies to the rk-merson integrator only' -- evolve --case free --accuracy 0.01 --out "$tmp/acc"
 expect nonzero "bad.json: gene 'kStep'" -- evaluate --genome "$tmp/bad.json"
 expect nonzero 'case.*free.*time.*performance' -- evolve --case scaffolded --out "$tmp/x"
 expect nonzero 'generations' -- evolve --case free --generations 0 --out "$tmp/x"

@@ -31,7 +31,7 @@ EvaluationResult SomeResult() {
 
 TEST(EvaluationJsonTest, HoldsEveryFieldOfTheResult) {
   const nlohmann::json j = EvaluationToJson(SomeResult());
-  EXPECT_EQ(j.size(), 13u);
+  EXPECT_EQ(j.size(), 15u);
   EXPECT_EQ(j.at("fitness").get<double>(), 3.25);
   EXPECT_EQ(j.at("distance").get<double>(), 4.0);
   EXPECT_EQ(j.at("leg_length").get<double>(), 1.23);
@@ -45,7 +45,20 @@ TEST(EvaluationJsonTest, HoldsEveryFieldOfTheResult) {
   EXPECT_EQ(j.at("cvode_steps").get<long>(), 12345);
   EXPECT_EQ(j.at("rhs_evals").get<long>(), 23456);
   EXPECT_EQ(j.at("preset").get<std::string>(), "paper");
+  EXPECT_EQ(j.at("integrator").get<std::string>(), "cvode");
+  EXPECT_FALSE(j.at("cut_off").get<bool>());
   EXPECT_FALSE(j.contains("ensemble"));
+}
+
+TEST(EvaluationJsonTest, NamesTheIntegratorAndACutOff) {
+  EvaluationResult r = SomeResult();
+  r.integrator = IntegrationMethod::kRkMerson;
+  r.cut_off = true;
+  r.fitness = kCutOffFitness;
+  const nlohmann::json j = EvaluationToJson(r);
+  EXPECT_EQ(j.at("integrator").get<std::string>(), "rk-merson");
+  EXPECT_TRUE(j.at("cut_off").get<bool>());
+  EXPECT_EQ(j.at("fitness").get<double>(), -124.0);
 }
 
 TEST(EvaluationJsonTest, NamesAFailureAndAFall) {

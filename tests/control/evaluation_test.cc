@@ -1,8 +1,11 @@
 #include "control/evaluation.h"
 
+#include <string>
 #include <thread>
 
 #include <gtest/gtest.h>
+
+#include "control/accuracy.h"
 
 namespace walkers {
 namespace {
@@ -12,6 +15,7 @@ void ExpectIdentical(const EvaluationResult& a, const EvaluationResult& b) {
   EXPECT_EQ(a.fitness, b.fitness);
   EXPECT_EQ(a.distance, b.distance);
   EXPECT_EQ(a.fell, b.fell);
+  EXPECT_EQ(a.cut_off, b.cut_off);
   EXPECT_EQ(a.failure, b.failure);
   EXPECT_EQ(a.footsteps, b.footsteps);
   EXPECT_EQ(a.trunk_contact_fraction, b.trunk_contact_fraction);
@@ -120,6 +124,56 @@ TEST(EvaluationTest, ObserverSeesEveryTickAndTheEnd) {
   });
   EXPECT_EQ(calls, 451);  // ticks at 0, 1/30, ..., 449/30, and the end at 15 s
   EXPECT_DOUBLE_EQ(last_t, 15.0);
+}
+
+
+// ---- RK-Merson and the authors' cut-off ----
+
+// ---- the walker under RK-Merson against the authors' program ----
+
+TEST(RungeKuttaMersonTest, TheAuthorsCaseOneBipedTakesTheirProgramsSteps) {
+  // their program, built with its integrator's statistics printed, took
+  // 1,778 steps (2,795 attempts, 12,960 right-hand sides) on this genome
+  // and scored 15.21 (docs/fidelity.md, "RK-Merson's steps")
+  const Genome genome = LoadGenome(std::string(WALKERS_SOURCE_DIR) + "/data/genomes/bench/authors_case1_biped.json");
+  EvaluationSettings settings;
+  settings.integrator.method = IntegrationMethod::kRkMerson;
+  const EvaluationResult r = Evaluate(genome, OriginalPreset(), settings);
+  ASSERT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_GT(r.integrator_stats.steps, 0.7 * 1778);
+  EXPECT_LT(r.integrator_stats.steps, 1.3 * 1778);
+  EXPECT_GT(r.fitness, 10.0);
+  EXPECT_EQ(r.gait, Gait::kBiped);
+}
+
+TEST(EvaluationTest, RkMersonIsBitIdenticalTwiceAndItsEnsembleMembersDiffer) {
+  EvaluationSettings settings;
+  settings.integrator.method = IntegrationMethod::kRkMerson;
+  const Genome genome = LoadGenome(std::string(WALKERS_SOURCE_DIR) + "/data/genomes/bench/authors_case2_tripod.json");
+  ExpectIdentical(Evaluate(genome, OriginalPreset(), settings), Evaluate(genome, OriginalPreset(), settings));
+  // an ensemble's members perturb RK-Merson's accuracy (control/accuracy.h)
+  const FitnessEnsemble ensemble = EvaluateEnsemble(genome, OriginalPreset(), settings, 3);
+  EXPECT_NE(ensemble.fitness[0], ensemble.fitness[2]);
+}
+
+TEST(EvaluationTest, AnEvaluationPastTheCutOffScoresMinus124AndIsNoFall) {
+  EvaluationSettings settings;
+  settings.integrator.method = IntegrationMethod::kRkMerson;
+  settings.cut_off_rhs = 5000;  // the initial individual takes tens of thousands
+  const EvaluationResult r = Evaluate(DefaultGenome(), OriginalPreset(), settings);
+  EXPECT_TRUE(r.cut_off);
+  EXPECT_EQ(r.fitness, kCutOffFitness);
+  EXPECT_FALSE(r.fell);
+  EXPECT_TRUE(r.failure.empty());
+  EXPECT_EQ(r.gait, Gait::kNone);
+  EXPECT_LT(r.sim_time, 15.0);  // it stops there
+  EXPECT_LE(r.rhs_evals, 5000 + 2000);  // within the tick that passed the budget
+  // without it the same walker walks its 15 s
+  settings.cut_off_rhs = 0;
+  const EvaluationResult uncut = Evaluate(DefaultGenome(), OriginalPreset(), settings);
+  EXPECT_FALSE(uncut.cut_off);
+  EXPECT_GT(uncut.fitness, 0.0);
+  EXPECT_GT(uncut.rhs_evals, 5000);
 }
 
 }  // namespace

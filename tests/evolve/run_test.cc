@@ -60,12 +60,12 @@ TEST_F(RunTest, WritesEveryFileWithTheDocumentedColumns) {
   EXPECT_EQ(again.ga.population, 8);
   // and the integrator's choices with it
   EXPECT_EQ(again.evaluation.integrator.relative_tolerance, SmallRun().evaluation.integrator.relative_tolerance);
-  EXPECT_EQ(again.evaluation.integrator.restart_on_torque_change,
-            SmallRun().evaluation.integrator.restart_on_torque_change);
+  EXPECT_EQ(again.evaluation.integrator.restart_at_ticks,
+            SmallRun().evaluation.integrator.restart_at_ticks);
   RunConfig history = SmallRun();
-  history.evaluation.integrator.restart_on_torque_change = !history.evaluation.integrator.restart_on_torque_change;
-  EXPECT_EQ(RunConfigFromJson(RunConfigToJson(history), "config.json").evaluation.integrator.restart_on_torque_change,
-            history.evaluation.integrator.restart_on_torque_change);
+  history.evaluation.integrator.restart_at_ticks = !history.evaluation.integrator.restart_at_ticks;
+  EXPECT_EQ(RunConfigFromJson(RunConfigToJson(history), "config.json").evaluation.integrator.restart_at_ticks,
+            history.evaluation.integrator.restart_at_ticks);
 }
 
 TEST_F(RunTest, SameSeedGivesIdenticalFilesWithOneAndTwoThreads) {

@@ -89,6 +89,25 @@ def test_evaluate_ensemble_equals_the_programs():
     assert ours["size"] == 3 and len(ours["fitness"]) == 3
 
 
+def test_the_integrator_and_its_cut_off_are_passed_on():
+    # rk-merson bit for bit as the program evaluates it, its ensemble too
+    cli = cli_evaluate(FALLER, "--integrator", "rk-merson", "--ensemble", "3")
+    ours = walkers.evaluate(str(FALLER), integrator="rk-merson", ensemble=3)
+    assert ours["integrator"] == "rk-merson"
+    for key in cli:
+        if key != "wall_ms":
+            assert ours[key] == cli[key], key
+    assert ours["cvode_steps"] != walkers.evaluate(str(FALLER))["cvode_steps"]
+    # a cut-off below what the initial individual takes: -124, as the authors' evolver scored it
+    cut = walkers.evaluate(str(DEFAULT), integrator="rk-merson", cut_off=2000)
+    assert cut["cut_off"] and cut["fitness"] == -124.0
+    assert cli_evaluate(DEFAULT, "--integrator", "rk-merson", "--cut-off", "2000")["fitness"] == -124.0
+    assert not walkers.evaluate(str(FALLER), integrator="rk-merson", cut_off="none")["cut_off"]
+    batch = walkers.evaluate_batch(batch_genomes()[:2], threads=1, integrator="rk-merson", cut_off=2000)
+    assert list(batch["fitness"]) == [walkers.evaluate(g, integrator="rk-merson", cut_off=2000)["fitness"]
+                                      for g in batch_genomes()[:2]]
+
+
 def test_paper_preset_is_passed_on():
     cli = cli_evaluate(DEFAULT, "--preset", "paper")
     ours = walkers.evaluate(str(DEFAULT), preset="paper")
@@ -186,8 +205,14 @@ def out_of_range(name, value):
     (lambda: walkers.evaluate_batch(np.vstack([batch_genomes()[:2], walkers.gene_ceilings * 2])),
      ["genomes[2]", "halfBodyX"]),
     (lambda: walkers.scaffold_ceiling("slow", 0), ["slow", "performance"]),
+    (lambda: walkers.evaluate(walkers.default_genome(), integrator="euler"), ["euler", "cvode, rk-merson"]),
+    (lambda: walkers.evaluate(walkers.default_genome(), accuracy=0.01), ["accuracy", "rk-merson"]),
+    (lambda: walkers.evaluate(walkers.default_genome(), integrator="rk-merson", accuracy=2.0), ["accuracy", "(0, 1]"]),
+    (lambda: walkers.evaluate(walkers.default_genome(), integrator="rk-merson", cut_off="never"), ["cut_off", "never"]),
+    (lambda: walkers.evaluate(walkers.default_genome(), integrator="rk-merson", cut_off=-5), ["cut_off", "[0"]),
 ], ids=["above", "below", "nan", "text", "array", "huge", "unknown", "missing", "gene count", "no file", "preset", "ensemble",
-        "columns", "rows", "threads", "row", "scaffold"])
+        "columns", "rows", "threads", "row", "scaffold", "integrator", "accuracy alone", "accuracy", "cut-off word",
+        "cut-off"])
 def test_bad_input_is_a_value_error_naming_the_field(call, words):
     with pytest.raises(ValueError) as error:
         call()

@@ -34,13 +34,15 @@ if [ "$kx" = "999" ]; then exec sleep 30; fi
 awk -v kx="$kx" 'BEGIN { printf "%.4f", kx / 100 }'
 """
 
-# walkers evaluate --ensemble N --json: a median 0.9 x kx / 100, one tripod when ky > 8000.
+# walkers evaluate --ensemble N --json: a median 0.9 x kx / 100 (0.5 x under rk-merson), one tripod
+# when ky > 8000.
 FAKE_WALKERS = """#!/usr/bin/python3
 import json, sys
 args = sys.argv[1:]
 g = json.load(open(args[args.index("--genome") + 1]))
 n = int(args[args.index("--ensemble") + 1])
-f = 0.9 * g["kx"] / 100
+assert args[args.index("--cut-off") + 1] == "none"
+f = (0.5 if args[args.index("--integrator") + 1] == "rk-merson" else 0.9) * g["kx"] / 100
 print(json.dumps({"fitness": f, "wall_ms": 1.0, "ensemble": {
     "fitness_median": f, "fitness_min": f - 1, "fitness_max": f + 1, "size": n,
     "bipeds": n if g["ky"] <= 8000 else n - 1, "tripods": 0 if g["ky"] <= 8000 else 1, "falls": 0}}))
@@ -125,6 +127,24 @@ class CompareAuthorsTest(unittest.TestCase):
         lines = table.read_text().splitlines()
         self.assertIn("| `archive_case2_05_28_16_31_22_1` | 14.90 | 14.00 | 12.60 [11.60, 13.60] | 0.90 | biped |", lines)
         self.assertIn("| `archive_case2_05_28_16_31_22_2` | 14.20 | -1.00 |", lines[4])
+
+    def test_both_of_our_integrators_side_by_side(self):
+        out = self.root / "genomes"
+        self.assertEqual(self.run_tool("extract", "--authors", str(self.root / "repo"), "--out", str(out)).returncode, 0)
+        report = self.root / "report.json"
+        p = self.run_both(out, "--integrator", "cvode", "--integrator", "rk-merson", "--json", str(report))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        r = json.loads(report.read_text())
+        self.assertEqual(r["integrators"], ["cvode", "rk-merson"])
+        self.assertAlmostEqual(r["summaries"]["cvode"]["median_ratio"], 0.9)
+        self.assertAlmostEqual(r["summaries"]["rk-merson"]["median_ratio"], 0.5)
+        # 0.5 of theirs is beyond a factor 1.5 for both that walk in theirs; the fall in theirs walks in ours
+        self.assertEqual(r["summaries"]["rk-merson"]["beyond_factor"], 3)
+        self.assertEqual(r["summaries"]["cvode"]["beyond_factor"], 1)
+        self.assertIn("rk-merson: 3 of 3 compared", p.stdout)
+        bad = self.run_both(out, "--accuracy", "0")
+        self.assertEqual(bad.returncode, 2)
+        self.assertIn("--accuracy", bad.stderr)
 
     def test_their_program_is_waited_for_as_long_as_timeout_says(self):
         genomes = self.root / "genomes"
