@@ -1,5 +1,5 @@
 // Contact as the authors' Simbody program computes it, in the plane
-// (MODEL.md §3 as superseded by docs/model.md "Contact"): the elastic
+// (docs/model.md, "Contact"): the elastic
 // foundation of the trunk's and feet's brick meshes against the ground and
 // against each other, Hertz contact of the knee spheres with the ground, the
 // knee spheres against the meshes, Simbody's friction law; and the joint

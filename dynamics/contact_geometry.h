@@ -1,5 +1,5 @@
 // The walker's contact surfaces as the authors' Simbody program builds them,
-// reduced to the plane of motion (MODEL.md §3, docs/model.md "Contact").
+// reduced to the plane of motion (docs/model.md, "Contact").
 //
 // Trunk and feet are brick triangle meshes (Simbody's
 // PolygonalMesh::createBrickMesh(halfSize, 6), each quad split in two). In

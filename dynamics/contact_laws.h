@@ -339,7 +339,8 @@ void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites
 // one of the pair's bodies, where a site's position and velocity cost a few
 // operations, and each body's wrench is formed once from the sums. The
 // templates above stay the reference; the automatic differentiation of the
-// Jacobian runs them, and tests/dynamics/contact_test.cc checks that both agree.
+// Jacobian runs them, and tests/dynamics/contact_sums_test.cc
+// (ContactSumsTest.AgreeWithTheReferenceLawsAtRandomOverlaps) checks that both agree.
 template <>
 void MeshOnGround<double>(const FoundationLaw& law, const GroundMesh& mesh, const BodyMotion<double>& body,
                           Wrench<double>* w, ContactReport* r);

@@ -1,5 +1,5 @@
 // Generalized coordinates of the planar walker and the fixed-size types used
-// throughout the project (MODEL.md §2).
+// throughout the project (docs/model.md, "Coordinates and conventions").
 #pragma once
 
 #include <Eigen/Core>

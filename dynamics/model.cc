@@ -85,7 +85,7 @@ Model BuildModel(const BodyParameters& body, const ModelOptions& options,
   m.ankle_mass = body.ankle_mass + m.foot_mass;
   m.total_mass = m.trunk_mass + m.hips_mass + 2.0 * (m.knee_mass + m.ankle_mass);
 
-  // the original's soft joint stops (MODEL.md §2)
+  // the original's soft joint stops (docs/model.md, "Joint stops")
   m.stops[kHip] = {M_PI / 4.0, 2.0, 5.0};
   m.stops[kKnee] = {M_PI / 3.0, 0.2, 50.0};
   m.stops[kAnkle] = {M_PI / 4.0, 2.0, 50.0};

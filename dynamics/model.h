@@ -1,5 +1,6 @@
 // The walker's constant model: masses, inertias, joint stops and contact
-// constants, built once from the physical sizes a genome gives (MODEL.md §2–§3).
+// constants, built once from the physical sizes a genome gives (docs/model.md,
+// "Mass model", "Joint stops" and "Contact").
 #pragma once
 
 #include <array>
@@ -36,7 +37,7 @@ struct ContactMaterial {
   double viscous_friction = 0.3;  // [s/m] friction coefficient per slip speed
 };
 
-// The authors' contact surfaces (MODEL.md §3). The reasons for each value are
+// The authors' contact surfaces (docs/model.md, "Contact"). The reasons for each value are
 // in docs/model.md; tests/dynamics/contact_test.cc checks the laws.
 struct ContactParameters {
   ContactMaterial surface;  // trunk, feet and ground
@@ -109,7 +110,7 @@ struct Model {
   WeldParameters weld;
   ModelOptions options;
 
-  // derived mass model (MODEL.md §2)
+  // derived mass model (docs/model.md, "Mass model")
   double trunk_mass = 0;        // [kg] box
   double hips_mass = 0;         // [kg] both hip point masses, at the hip
   double knee_mass = 0;         // [kg] per knee

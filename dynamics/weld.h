@@ -1,5 +1,5 @@
-// The weld that holds a planted foot (MODEL.md §3, docs/model.md "Planted-foot
-// weld"): an exact constraint on the foot's centre and angle, as the authors'
+// The weld that holds a planted foot (docs/model.md, "Planted-foot weld"):
+// an exact constraint on the foot's centre and angle, as the authors'
 // Simbody weld. Everything the rest of the code knows of a weld is here: its
 // parameters, where it holds the foot, its constraint rows and their
 // derivatives. The forward dynamics solve them with the equations of motion

@@ -39,7 +39,7 @@ TEST(EvaluationTest, TheDefaultGenomeStepsAsATripod) {
   EXPECT_DOUBLE_EQ(r.fitness, r.distance / r.leg_length);
   EXPECT_EQ(r.preset, "original");
   EXPECT_GT(r.cvode_steps, 0);
-  // its planted feet stay put under the VMC loads (MODEL.md §3)
+  // its planted feet stay put under the VMC loads (docs/model.md, "Planted-foot weld")
   EXPECT_LT(r.max_weld_drift, 1e-3);
 }
 
