@@ -28,7 +28,7 @@ class Integrator {
   Integrator& operator=(const Integrator&) = delete;
 
   // Starts a new trajectory at (t0, state) holding `inputs`; clears the stats
-  // and the dissipated energy.
+  // and RK-Merson's dissipated energy.
   void Reset(double t0, const State& state, const Inputs& inputs = {});
 
   // New joint torques from the current time on (a jump of the right-hand side).
@@ -44,9 +44,6 @@ class Integrator {
 
   double time() const { return stepper_->time(); }
   const State& state() const { return stepper_->state(); }
-  // [J] what the contact dissipated since Reset (RK-Merson's auxiliary
-  // variable; 0 under CVODE, which does not integrate it)
-  double dissipated_energy() const { return stepper_->state().z; }
   const Inputs& inputs() const { return system_.inputs(); }
   const Model& model() const { return system_.model(); }
   const IntegratorSettings& settings() const { return settings_; }

@@ -42,9 +42,6 @@ class RungeKuttaMerson final : public TimeStepper {
   IntegratorStats stats() const override { return stats_; }
   void SetStepObserver(StepObserver observer) override { observer_ = std::move(observer); }
 
-  // The step size the next step tries first.
-  double step_size() const { return h_; }
-
   // Simbody's step size control (AbstractIntegratorRep::adjustStepSize):
   // from the current step h, the error norm E of the attempt (not finite: a
   // failed attempt), the accuracy and whether the attempt was cut short by a
