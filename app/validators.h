@@ -85,17 +85,14 @@ struct IntegrationChoice {
   double accuracy = 0;  // 0: unset, RK-Merson's own (the authors' 0.05)
   std::string cut_off;  // empty: the integrator's own (RK-Merson: the authors'); "none"; or right-hand sides
 
-  // The evaluation settings of the choice. Throws std::invalid_argument
-  // naming the option when the options do not go together.
+  // The evaluation settings of the choice. Throws InputError naming the
+  // option when the options do not go together.
   EvaluationSettings Settings() const {
-    try {
-      return SettingsOfIntegrator(integrator, accuracy > 0 ? std::optional<double>(accuracy) : std::nullopt,
-                                  cut_off.empty()     ? std::nullopt
-                                  : cut_off == "none" ? std::optional<long>(0)
-                                                      : std::optional<long>(std::stol(cut_off)));
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("--integrator, --accuracy, --cut-off: ") + e.what());
-    }
+    return SettingsOfIntegrator(integrator, accuracy > 0 ? std::optional<double>(accuracy) : std::nullopt,
+                                cut_off.empty()     ? std::nullopt
+                                : cut_off == "none" ? std::optional<long>(0)
+                                                    : std::optional<long>(std::stol(cut_off)),
+                                {"--integrator", "--accuracy", "--cut-off"});
   }
 };
 inline void AddIntegrationOptions(CLI::App* sub, IntegrationChoice* choice) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "control/start_pose.h"
+#include "files/errors.h"
 #include "dynamics/contact.h"
 #include "dynamics/kinematics.h"
 #include "dynamics/planting.h"
@@ -25,22 +26,22 @@ const char* GaitName(Gait gait) {
 }
 
 EvaluationSettings SettingsOfIntegrator(const std::string& integrator, std::optional<double> accuracy,
-                                        std::optional<long> cut_off_rhs) {
+                                        std::optional<long> cut_off_rhs, const IntegrationChoiceNames& names) {
   EvaluationSettings settings;
   if (!ParseIntegrationMethod(integrator, &settings.integrator.method)) {
-    throw std::invalid_argument("integrator = \"" + integrator + "\" is none of cvode, rk-merson");
+    throw InputError(names.integrator + " = \"" + integrator + "\" is none of cvode, rk-merson");
   }
   const bool rk_merson = settings.integrator.method == IntegrationMethod::kRkMerson;
   if (accuracy) {
-    if (!rk_merson) throw std::invalid_argument("the accuracy applies to the rk-merson integrator only");
+    if (!rk_merson) throw InputError(names.accuracy + " applies to the rk-merson integrator only");
     if (!(*accuracy > 0.0 && *accuracy <= 1.0)) {
-      throw std::invalid_argument("accuracy = " + std::to_string(*accuracy) + " is outside its allowed range (0, 1]");
+      throw InputError(names.accuracy + " = " + std::to_string(*accuracy) + " is outside its allowed range (0, 1]");
     }
     settings.integrator.accuracy = *accuracy;
   }
   if (cut_off_rhs && *cut_off_rhs < 0) {
-    throw std::invalid_argument("cut_off = " + std::to_string(*cut_off_rhs) +
-                                " is outside its allowed range [0 (none), 1000000000] right-hand sides");
+    throw InputError(names.cut_off + " = " + std::to_string(*cut_off_rhs) +
+                     " is outside its allowed range [0 (none), 1000000000] right-hand sides");
   }
   settings.cut_off_rhs = cut_off_rhs ? *cut_off_rhs : rk_merson ? kAuthorsCutOffRhs : 0;
   return settings;

@@ -59,13 +59,22 @@ struct EvaluationSettings {
   double start_trunk_raise = 0.0;
 };
 
+// How the caller names the three choices of SettingsOfIntegrator in its
+// messages: the command line's options or the Python module's arguments.
+struct IntegrationChoiceNames {
+  std::string integrator = "integrator";
+  std::string accuracy = "accuracy";
+  std::string cut_off = "cut_off";
+};
+
 // The evaluation settings of an integrator by its name ("cvode",
 // "rk-merson"): its accuracy (RK-Merson's; none: the authors' 0.05) and its
 // cut-off in right-hand sides (none: the integrator's own, the authors'
 // kAuthorsCutOffRhs under RK-Merson and none under CVODE; 0: none). Throws
-// std::invalid_argument naming what does not fit.
+// InputError naming, by `names`, the choice that is not allowed.
 EvaluationSettings SettingsOfIntegrator(const std::string& integrator, std::optional<double> accuracy = std::nullopt,
-                                        std::optional<long> cut_off_rhs = std::nullopt);
+                                        std::optional<long> cut_off_rhs = std::nullopt,
+                                        const IntegrationChoiceNames& names = {});
 
 struct EvaluationResult {
   double fitness = -1;         // paper eq. (6): distance / leg length; -1 for a fall or a failure, -124 cut off

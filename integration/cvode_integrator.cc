@@ -1,5 +1,6 @@
 #include "integration/cvode_integrator.h"
 
+#include "files/errors.h"
 #include "integration/block_matrix18.h"
 #include "integration/fixed_size_ops.h"
 #include "integration/schur_linear_solver.h"
@@ -115,9 +116,8 @@ CvodeIntegrator::CvodeIntegrator(SecondOrderSystem& system, const IntegratorSett
   // dense matrix
   if (settings.linear_solver == LinearSolver::kSchurBlocks) {
     // CVODE's difference quotients fill dense or band matrices only
-    if (settings.jacobian != JacobianSource::kAnalytic) {
-      throw std::invalid_argument("IntegratorSettings: the block Newton matrix needs the analytic Jacobian");
-    }
+    WALKERS_CHECK(settings.jacobian == JacobianSource::kAnalytic,
+                  "IntegratorSettings: the block Newton matrix needs the analytic Jacobian");
     cv_->jacobian = MakeBlockMatrix18(cv_->context);
   } else {
     cv_->jacobian = SUNDenseMatrix(kStateSize, kStateSize, cv_->context);

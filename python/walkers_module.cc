@@ -55,17 +55,13 @@ EvaluationSettings SettingsOf(const std::string& integrator, std::optional<doubl
   std::optional<long> rhs;
   if (py::isinstance<py::str>(cut_off)) {
     if (cut_off.cast<std::string>() != "none") {
-      throw py::value_error("cut_off = \"" + cut_off.cast<std::string>() + "\": none, \"none\" or right-hand sides");
+      throw InputError("cut_off = \"" + cut_off.cast<std::string>() + "\": none, \"none\" or right-hand sides");
     }
     rhs = 0;
   } else if (!cut_off.is_none()) {
     rhs = cut_off.cast<long>();
   }
-  try {
-    return SettingsOfIntegrator(integrator, accuracy, rhs);
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());
-  }
+  return SettingsOfIntegrator(integrator, accuracy, rhs);
 }
 
 py::dict Evaluate1(const py::handle& genome_object, const std::string& preset_name, std::optional<int> ensemble_size,

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "control/accuracy.h"
+#include "tests/input_error_message.h"
 
 namespace walkers {
 namespace {
@@ -127,8 +128,6 @@ TEST(EvaluationTest, ObserverSeesEveryTickAndTheEnd) {
 }
 
 
-// ---- RK-Merson and the authors' cut-off ----
-
 // ---- the walker under RK-Merson against the authors' program ----
 
 TEST(RungeKuttaMersonTest, TheAuthorsCaseOneBipedTakesTheirProgramsSteps) {
@@ -174,6 +173,25 @@ TEST(EvaluationTest, AnEvaluationPastTheCutOffScoresMinus124AndIsNoFall) {
   EXPECT_FALSE(uncut.cut_off);
   EXPECT_GT(uncut.fitness, 0.0);
   EXPECT_GT(uncut.rhs_evals, 5000);
+}
+
+TEST(EvaluationTest, AnIntegratorChoiceThatIsNotAllowedNamesItsOption) {
+  using testing::InputErrorMessage;
+  const IntegrationChoiceNames cli{"--integrator", "--accuracy", "--cut-off"};
+  EXPECT_NE(InputErrorMessage([&] { SettingsOfIntegrator("euler", std::nullopt, std::nullopt, cli); })
+                .find("--integrator = \"euler\" is none of cvode, rk-merson"),
+            std::string::npos);
+  EXPECT_NE(InputErrorMessage([&] { SettingsOfIntegrator("cvode", 0.01, std::nullopt, cli); })
+                .find("--accuracy applies to the rk-merson integrator only"),
+            std::string::npos);
+  EXPECT_NE(InputErrorMessage([&] { SettingsOfIntegrator("rk-merson", 2.0, std::nullopt, cli); }).find("(0, 1]"),
+            std::string::npos);
+  EXPECT_NE(InputErrorMessage([] { SettingsOfIntegrator("rk-merson", std::nullopt, -3); }).find("cut_off = -3"),
+            std::string::npos);
+  // the choices that are allowed, and their defaults
+  EXPECT_EQ(SettingsOfIntegrator("rk-merson").cut_off_rhs, kAuthorsCutOffRhs);
+  EXPECT_EQ(SettingsOfIntegrator("rk-merson", 0.01, 0).integrator.accuracy, 0.01);
+  EXPECT_EQ(SettingsOfIntegrator("cvode").cut_off_rhs, 0);
 }
 
 }  // namespace
