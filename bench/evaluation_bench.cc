@@ -3,6 +3,9 @@
 //
 //   evaluation_bench --benchmark_filter=Genome/bench     per genome of the benchmark set, production settings
 //   evaluation_bench --benchmark_filter=Genome/authors   per genome of the authors' final archives
+//   evaluation_bench --benchmark_filter=Integrator   the benchmark set under CVODE and RK-Merson, genome by
+//                                                    genome (add --benchmark_enable_random_interleaving=true
+//                                                    to alternate their repetitions)
 //   evaluation_bench --benchmark_filter=Variant      the choices of docs/performance.md
 //   evaluation_bench --benchmark_filter=Generation   16 children on 2 threads
 //   evaluation_bench --benchmark_filter=Batch        bench/walkers_module_bench.py's 16 genomes on 2 threads
@@ -19,15 +22,15 @@
 namespace walkers::bench {
 namespace {
 
-void EvaluateGenome(benchmark::State& st, const Genome& genome) {
+void EvaluateGenome(benchmark::State& st, const Genome& genome, const EvaluationSettings& settings) {
   EvaluationResult r;
   for (auto _ : st) {
-    r = Evaluate(genome, OriginalPreset());
+    r = Evaluate(genome, OriginalPreset(), settings);
     benchmark::DoNotOptimize(r);
   }
   st.SetItemsProcessed(st.iterations());
   st.counters["fitness"] = r.fitness;
-  st.counters["cvode_steps"] = static_cast<double>(r.cvode_steps);
+  st.counters["steps"] = static_cast<double>(r.integrator_stats.steps);
   st.counters["rhs_evals"] = static_cast<double>(r.rhs_evals);
 }
 
@@ -88,7 +91,16 @@ void Batch(benchmark::State& st) {
 const bool kRegistered = [] {
   for (const char* set : {"bench", "authors"}) {
     for (const auto& [name, genome] : GenomeSet(set)) {
-      benchmark::RegisterBenchmark(("Genome/" + std::string(set) + "/" + name).c_str(), EvaluateGenome, genome)
+      benchmark::RegisterBenchmark(("Genome/" + std::string(set) + "/" + name).c_str(), EvaluateGenome, genome,
+                                   EvaluationSettings{})
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  // the authors' integrator beside CVODE, without the cut-off: every walk to its end
+  for (const auto& [name, genome] : GenomeSet("bench")) {
+    for (const char* method : {"cvode", "rk-merson"}) {
+      benchmark::RegisterBenchmark(("Integrator/" + name + "/" + method).c_str(), EvaluateGenome, genome,
+                                   SettingsOfIntegrator(method, std::nullopt, 0))
           ->Unit(benchmark::kMillisecond);
     }
   }
