@@ -7,6 +7,11 @@ course of evolution (case 3 leading in most generations, case 2's tripods, the t
 biped) use the runs' recorded curves and gaits. The paper's cases are named by their
 numbers 1, 2, 3: the places of the scaffolds in reproduction.json.
 
+Beside each test between cases stands its paired counterpart over replicates
+(replicate r of every case starts from seed r: docs/statistics.md, "The paired design"):
+Wilcoxon's signed-rank test for fitness, the sign test for gaits and generations. It
+decides nothing: the verdicts are the rule's, below.
+
 Verdict rule, per claim (ALPHA = 0.05, intervals at 95 %):
   reproduced       the one-sided test in the paper's direction gives p < 0.05;
   not reproduced   otherwise, when our 95 % interval of the effect lies wholly on the
@@ -24,16 +29,18 @@ from .load import of_case, paper_cases
 from .statistics import (ALPHA, BOOTSTRAP_RESAMPLES, CONFIDENCE, EXACT_SPLITS,
                          MONTE_CARLO_PERMUTATIONS, SEED, biped_for_good, bootstrap_interval,
                          bootstrap_paired, cliffs_delta, common_curves, curve_test, first_biped,
-                         fisher_greater, hodges_lehmann, median_time, newcombe_interval,
+                         fisher_p, hodges_lehmann, median_time, newcombe_interval,
                          rank_sum_test, ratio_of_means, share_interval, share_leading,
-                         sign_test_greater, wilson_interval)
+                         sign_test_greater, signed_rank_test, wilson_interval)
 from .text import fmt_generation, fmt_interval, fmt_p, json_interval, n_label
 
 REPRODUCED, NOT_REPRODUCED = "reproduced", "not reproduced"
 RULE = ("reproduced: the one-sided test in the paper's direction gives p < 0.05; "
         "not reproduced: otherwise, when our 95 % interval of the effect lies wholly on "
         "the no-effect side of the paper's value (of no effect itself, for a claim of "
-        "direction only); inconclusive at n = N (runs per case) otherwise")
+        "direction only); inconclusive at n = N (runs per case) otherwise. The tests "
+        "compare the cases' runs as independent samples; the paired tests over "
+        "replicates stand beside them and decide nothing")
 
 
 def verdict(p, interval, direction, null, paper, n_label):
@@ -146,6 +153,33 @@ def compared_finals(claim, runs, case_x, case_y):
     return None, finals(of_case(runs, case_x)), finals(of_case(runs, case_y))
 
 
+def replicate_pairs(runs, cases, value):
+    """value(run) of each case's runs, for the replicates every one of `cases` has, in
+    replicate order: one list per case, the k-th entries of one replicate."""
+    by_case = [{r["replicate"]: value(r) for r in of_case(runs, c)} for c in cases]
+    common = sorted(set.intersection(*(set(values) for values in by_case)))
+    return [[values[r] for r in common] for values in by_case]
+
+
+def paired_signed_rank(x, y, alternative, direction):
+    """The one-sided signed-rank test of replicate pairs (x_r, y_r): its record for
+    summary.json and its words for the line."""
+    w, pairs, p, exact = signed_rank_test(x, y, alternative)
+    return ({"name": f"Wilcoxon signed-rank over replicates, one-sided ({direction})",
+             "statistic": w, "pairs": pairs, "p": p, "exact": exact},
+            f"paired over replicates: Wilcoxon signed-rank W+ = {w:g} of {pairs} pairs that "
+            f"differ, p = {fmt_p(p)}")
+
+
+def paired_sign(x, y, direction):
+    """The one-sided sign test that x_r > y_r in most replicates: its record and words."""
+    wins, pairs, p = sign_test_greater(x, y)
+    return ({"name": f"sign test over replicates, one-sided ({direction})", "statistic": wins,
+             "pairs": pairs, "p": p},
+            f"paired over replicates: sign test, {wins} of {pairs} pairs that differ, "
+            f"p = {fmt_p(p)}")
+
+
 def mann_whitney(x, y, alternative, direction):
     """The one-sided Mann-Whitney test of x against y ('greater' or 'less'): U, p and the
     test's record for summary.json, named with its direction (e.g. "case 3 > case 1")."""
@@ -186,6 +220,8 @@ def claim_case3_above_case1(rep):
     if gap:
         return gap
     u, p, test = mann_whitney(x, y, "greater", "case 3 > case 1")
+    paired, paired_words = paired_signed_rank(
+        *replicate_pairs(rep["runs"], (c3, c1), lambda r: r["final"]), "greater", "case 3 > case 1")
     delta = two_sample_effect("Cliff's delta", cliffs_delta, x, y)
     shift = two_sample_effect("Hodges-Lehmann shift", hodges_lehmann, x, y)
     numbers = (f"final best {np.mean(x):.2f} against {np.mean(y):.2f} (means of the re-scored "
@@ -193,10 +229,10 @@ def claim_case3_above_case1(rep):
                f"{delta['value']:+.2f} {fmt_interval(delta['interval'], '{:+.2f}')}, "
                f"Hodges–Lehmann shift {shift['value']:+.2f} "
                f"{fmt_interval(shift['interval'], '{:+.2f}')}; "
-               f"one-sided Mann–Whitney U = {u:g}, p = {fmt_p(p)}")
+               f"one-sided Mann–Whitney U = {u:g}, p = {fmt_p(p)}; {paired_words}")
     return finding(claim, f"{np.mean(x):.2f} against {np.mean(y):.2f}", p, delta, +1, 0.0, None,
                    n_label(len(x), len(y)),
-                   numbers, {"test": test, "n": [len(x), len(y)],
+                   numbers, {"test": test, "paired_test": paired, "n": [len(x), len(y)],
                              "hodges_lehmann": {"value": shift["value"],
                                                 "interval": json_interval(shift["interval"])}})
 
@@ -216,17 +252,21 @@ def claim_case3_leads_generations(rep):
     area, p, exact = curve_test(a, b)
     interval = share_interval(a, b)
     generations = common_curves(a, b)[0].shape[1]
+    paired, paired_words = paired_signed_rank(
+        *replicate_pairs(runs, (c3, c1), lambda r: float(np.mean(r["best_fitness"][:generations]))),
+        "greater", "case 3 > case 1")
     numbers = (f"{100 * share:.1f} % of {generations} generations "
                f"{fmt_interval(interval, '{:.1f}', 100, ' %')}; best fitness averaged over the "
                f"generations, case 3 − case 1: {area:+.2f}, one-sided permutation "
-               f"p = {fmt_p(p)}")
+               f"p = {fmt_p(p)}; {paired_words}")
     test = {"name": "permutation test of the replicates' best fitness averaged over the "
                     "generations, case 3 - case 1, one-sided", "statistic": area, "p": p,
             "exact": exact}
     effect = {"name": "share of generations", "value": share, "interval": interval}
     return finding(claim, f"in {100 * share:.1f} %", p, effect, +1, 0.5, rep["paper"]["share"],
                    n_label(len(a), len(b)), numbers,
-                   {"test": test, "n": [len(a), len(b)], "generations": generations})
+                   {"test": test, "paired_test": paired, "n": [len(a), len(b)],
+                    "generations": generations})
 
 
 def claim_case2_below_case1(rep):
@@ -239,14 +279,17 @@ def claim_case2_below_case1(rep):
     if gap:
         return gap
     u, p, test = mann_whitney(x, y, "less", "case 2 < case 1")
+    paired, paired_words = paired_signed_rank(
+        *replicate_pairs(rep["runs"], (c2, c1), lambda r: r["final"]), "less", "case 2 < case 1")
     ratio = two_sample_effect("ratio of the final mean best fitness (re-scored medians), "
                               "case 2 / case 1", ratio_of_means, x, y)
     numbers = (f"case 2's final mean best is {100 * ratio['value']:.1f} % of case 1's "
                f"{fmt_interval(ratio['interval'], '{:.1f}', 100, ' %')}, Cliff's δ = "
                f"{float(cliffs_delta(x, y)):+.2f}; one-sided Mann–Whitney U = {u:g}, "
-               f"p = {fmt_p(p)}")
+               f"p = {fmt_p(p)}; {paired_words}")
     return finding(claim, f"at {100 * ratio['value']:.1f} % of case 1", p, ratio, -1, 1.0, paper,
-                   n_label(len(x), len(y)), numbers, {"test": test, "n": [len(x), len(y)],
+                   n_label(len(x), len(y)), numbers, {"test": test, "paired_test": paired,
+                                                      "n": [len(x), len(y)],
                              "cliffs_delta": float(cliffs_delta(x, y))})
 
 
@@ -267,7 +310,11 @@ def claim_case2_more_tripods(rep):
     other_runs = [r for c in others for r in of_case(runs, c)]
     k2, n2 = tripod_finals(time_runs), len(time_runs)
     ko, no = tripod_finals(other_runs), len(other_runs)
-    p = fisher_greater(k2, n2, ko, no)
+    p = fisher_p(k2, n2, ko, no, "greater")
+    # paired: per replicate, case 2's tripod (1 or 0) against the mean of cases 1 and 3
+    t1, t2, t3 = replicate_pairs(runs, (c1, c2, c3), lambda r: float(r["best_gait"][-1] == "tripod"))
+    paired, paired_words = paired_sign(t2, [(a + b) / 2 for a, b in zip(t1, t3)],
+                                       "case 2 > cases 1 and 3")
     w2, wo = wilson_interval(k2, n2), wilson_interval(ko, no)
     effect = {"name": "difference of the shares ending as tripods, case 2 - cases 1 and 3",
               "value": k2 / n2 - ko / no, "interval": newcombe_interval(k2, n2, ko, no)}
@@ -275,14 +322,14 @@ def claim_case2_more_tripods(rep):
                f"{fmt_interval(wo, '{:.0f}', 100, ' %')} (Wilson), difference "
                f"{100 * effect['value']:+.0f} points "
                f"{fmt_interval(effect['interval'], '{:+.0f}', 100)} (Newcombe); one-sided "
-               f"Fisher's exact p = {fmt_p(p)}")
+               f"Fisher's exact p = {fmt_p(p)}; {paired_words}")
     test = {"name": "Fisher's exact, one-sided (case 2 > cases 1 and 3)", "p": p}
     shares = {"case2": {"tripods": k2, "runs": n2, "wilson": json_interval(w2)},
               "cases1and3": {"tripods": ko, "runs": no, "wilson": json_interval(wo)}}
     return finding(claim, f"{k2} of {n2} against {ko} of {no}", p, effect, +1, 0.0,
                    k2p / n2p - kop / nop,
                    n_label(*(len(of_case(runs, c)) for c in (c1, c2, c3))), numbers,
-                   {"test": test, "shares": shares})
+                   {"test": test, "paired_test": paired, "shares": shares})
 
 
 def claim_biped_above_tripod(rep):
@@ -336,15 +383,18 @@ def claim_case2_later_biped(rep):
     x = [time_to_biped(r, True, never) for r in of_case(runs, c2)]
     y = [time_to_biped(r, True, never) for r in of_case(runs, c1)]
     u, p, test = mann_whitney(x, y, "greater", "case 2 later than case 1")
+    paired, paired_words = paired_sign(
+        *replicate_pairs(runs, (c2, c1), lambda r: time_to_biped(r, True, never)),
+        "case 2 later than case 1")
     delta = two_sample_effect("Cliff's delta of the generation of a biped for good, case 2 vs "
                               "case 1", cliffs_delta, x, y)
     medians = (f"median generation {fmt_generation(median_time(x), never)} against "
                f"{fmt_generation(median_time(y), never)}")
     numbers = (f"{medians} (never: {x.count(never)} and {y.count(never)}), Cliff's δ = "
                f"{delta['value']:+.2f} {fmt_interval(delta['interval'], '{:+.2f}')}; one-sided "
-               f"Mann–Whitney U = {u:g}, p = {fmt_p(p)}")
+               f"Mann–Whitney U = {u:g}, p = {fmt_p(p)}; {paired_words}")
     return finding(claim, medians, p, delta, +1, 0.0, None, n_label(len(x), len(y)),
-                   numbers, {"test": test, "n": [len(x), len(y)]})
+                   numbers, {"test": test, "paired_test": paired, "n": [len(x), len(y)]})
 
 
 # the paper's claims, in the order of its §3
@@ -410,13 +460,16 @@ def evaluate(rep):
 # ----------------------------------------------------------------------------- output
 
 def verdict_table(findings):
-    """The claims at a glance: what the paper says, what we find, p and the verdict."""
-    lines = ["| the paper's claim | the paper | ours | one-sided p | verdict |",
-             "|---|---|---|---|---|"]
+    """The claims at a glance: what the paper says, what we find, p (and the paired
+    test's, which decides nothing) and the verdict."""
+    lines = ["| the paper's claim | the paper | ours | one-sided p | paired over replicates: p "
+             "| verdict |",
+             "|---|---|---|---|---|---|"]
     for f in findings:
         p = f.get("test", {}).get("p")
+        paired = f.get("paired_test", {}).get("p")
         lines.append(f"| {f['statement']} | {f['paper_says']} | {f['we_find']} | {fmt_p(p)} | "
-                     f"**{f['verdict']}** |")
+                     f"{fmt_p(paired)} | **{f['verdict']}** |")
     return lines
 
 

@@ -23,6 +23,10 @@ nothing random is left unseeded, so the same runs give the same bits.
     shares near 0 or 1.
   * Paired bootstrap (a run's best biped with its best tripod); the sign test
     (scipy.stats.binomtest).
+  * Pairs of replicates (replicate r of two cases): Wilcoxon's signed-rank test, its
+    p over the ways of signing the ranks of the differences (every one up to
+    EXACT_SPLITS: 17 pairs), ties given midranks and zero differences left out; or
+    the sign test.
   * Time to a biped: the generation of a run's first biped best, and that from which
     its best is a biped to the end ("for good").
 """
@@ -215,10 +219,11 @@ def newcombe_interval(k1, n1, k2, n2):
     return d - math.hypot(p1 - l1, u2 - p2), d + math.hypot(u1 - p1, p2 - l2)
 
 
-def fisher_greater(k1, n1, k2, n2):
-    """One-sided Fisher's exact test that k1/n1 exceeds k2/n2: its p-value."""
+def fisher_p(k1, n1, k2, n2, alternative):
+    """Fisher's exact test of k1/n1 against k2/n2: its p-value ('greater': that k1/n1
+    exceeds k2/n2; 'two-sided': that they differ)."""
     return float(stats.fisher_exact([[k1, n1 - k1], [k2, n2 - k2]],
-                                    alternative="greater").pvalue)
+                                    alternative=alternative).pvalue)
 
 
 def sign_test_greater(x, y):
@@ -229,6 +234,32 @@ def sign_test_greater(x, y):
     if n == 0:
         return wins, n, None
     return wins, n, float(stats.binomtest(wins, n, 0.5, alternative="greater").pvalue)
+
+
+def signed_rank_test(x, y, alternative):
+    """Wilcoxon's signed-rank test of the pairs (x_i, y_i) ('greater': x_i - y_i tends to
+    be positive): the pairs that differ, their |x_i - y_i| ranked (midranks for ties),
+    W+ the sum of the ranks of the positive differences, and its one-sided p over the
+    2^n ways of signing the ranks: every one of them up to EXACT_SPLITS (17 pairs),
+    else MONTE_CARLO_PERMUTATIONS seeded ones. Returns (W+, pairs that differ, p,
+    exact); p is None without any."""
+    d = np.asarray(x, float) - np.asarray(y, float)
+    d = d[d != 0]
+    if len(d) == 0:
+        return 0.0, 0, None, True
+    ranks = stats.rankdata(np.abs(d))
+    observed = float(ranks[d > 0].sum())
+    exact = 2 ** len(d) <= EXACT_SPLITS
+    if exact:
+        # row k signs rank i positive when bit i of k is set
+        positive = (np.arange(2 ** len(d))[:, None] >> np.arange(len(d))) & 1
+    else:
+        positive = rng().random((MONTE_CARLO_PERMUTATIONS, len(d))) < 0.5
+    null = positive @ ranks
+    slack = 1e-9 * max(1.0, observed)          # equal up to rounding counts as equal
+    hits = np.sum(null >= observed - slack if alternative == "greater" else null <= observed + slack)
+    p = hits / len(null) if exact else (hits + 1) / (len(null) + 1)
+    return observed, len(d), float(p), exact
 
 
 def first_biped(generations, gaits):

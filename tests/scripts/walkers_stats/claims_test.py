@@ -137,8 +137,8 @@ class ClaimsOnRunsTest(unittest.TestCase):
         self.assertIn("| Case 2 (time) ends below case 1 (free) | at 66 % of case 1 | "
                       "at 65.1 % of case 1 |", "\n".join(table))
         self.assertIn("| Case 2 ends as a tripod more often than cases 1 and 3 | 2 of 3 against "
-                      "0 of 6 | 3 of 4 against 0 of 8 | 0.018 | **reproduced** |", table)
-        self.assertIn("| +37.5 % | +92.0 % | 0.073 | **inconclusive at n = 4** |",
+                      "0 of 6 | 3 of 4 against 0 of 8 | 0.018 | 0.125 | **reproduced** |", table)
+        self.assertIn("| +37.5 % | +92.0 % | 0.073 | — | **inconclusive at n = 4** |",
                       table[2 + claims.CLAIMS.index(claims.claim_biped_above_tripod)])
         self.assertIn("| the time-constrained scaffold hinders bipedal evolution | median "
                       "generation never against 5 |",
@@ -148,8 +148,46 @@ class ClaimsOnRunsTest(unittest.TestCase):
                                       "performance": PAPER_LIKE["performance"]})
         row = claims.verdict_table(block["findings"])[
             2 + claims.CLAIMS.index(claims.claim_case2_below_case1)]
-        self.assertTrue(row.endswith("| at 66 % of case 1 | — | — | **inconclusive at n = 0** |"), row)
+        self.assertTrue(row.endswith("| at 66 % of case 1 | — | — | — | **inconclusive at n = 0** |"), row)
         self.assertIn(row, claims.markdown(block))
+
+    def test_paired_tests_over_replicates_stand_beside_and_decide_nothing(self):
+        found, _ = self.findings(PAPER_LIKE)
+        # case 3 above case 1 in each of the 4 replicates: W+ = 1 + 2 + 3 + 4, p = 1/2^4
+        for claim in ("case3_above_case1", "case3_leads_generations"):
+            paired = found[claim]["paired_test"]
+            self.assertEqual((paired["statistic"], paired["pairs"], paired["exact"]), (10.0, 4, True))
+            self.assertEqual(paired["p"], 1 / 16, claim)
+            self.assertIn("Wilcoxon signed-rank", paired["name"])
+            self.assertIn("paired over replicates: Wilcoxon signed-rank W+ = 10 of 4 pairs that "
+                          "differ, p = 0.062", found[claim]["line"])
+        # case 2 below case 1 in every replicate: W+ = 0, p = 1/16 the other way
+        below = found["case2_below_case1"]["paired_test"]
+        self.assertEqual((below["statistic"], below["p"]), (0.0, 1 / 16))
+        # case 2 a tripod in replicates 1, 2 and 4, cases 1 and 3 in none: 3 of 3, p = 1/8
+        tripods = found["case2_more_tripods"]["paired_test"]
+        self.assertEqual((tripods["statistic"], tripods["pairs"], tripods["p"]), (3, 3, 1 / 8))
+        self.assertIn("sign test", tripods["name"])
+        later = found["case2_later_biped"]["paired_test"]
+        self.assertEqual((later["statistic"], later["pairs"], later["p"]), (4, 4, 1 / 16))
+        # the verdicts are the independent tests': p = 1/16 would not have reproduced them
+        for claim in ("case3_above_case1", "case2_below_case1", "case2_later_biped"):
+            self.assertEqual(found[claim]["verdict"], "reproduced", claim)
+        self.assertNotIn("paired_test", found["biped_above_tripod"])
+
+    def test_only_replicates_that_both_cases_have_are_paired(self):
+        runs = {c: list(v) for c, v in PAPER_LIKE.items()}
+        runs["free"] = runs["free"][:3]          # free-4 missing: three pairs
+        runs["performance"][0] = (15.0,) + runs["performance"][0][1:]   # replicate 1 reversed
+        found, _ = self.findings(runs)
+        paired = found["case3_above_case1"]["paired_test"]
+        # differences 15 - 19 = -4, 23 - 18 = 5, 21 - 20 = 1, ranked 2, 3, 1: W+ = 3 + 1;
+        # the signings with W+ >= 4 are {1, 3}, {2, 3} and {1, 2, 3}: 3 of 8
+        self.assertEqual((paired["statistic"], paired["pairs"], paired["p"]), (4.0, 3, 3 / 8))
+        self.assertEqual(claims.replicate_pairs(
+            [{"case": c, "replicate": r, "final": 10 * k + r} for k, c in enumerate("ab")
+             for r in ((1, 2, 5) if c == "a" else (2, 5, 7))], ("a", "b"), lambda r: r["final"]),
+            [[2, 5], [12, 15]])
 
     def test_alike_cases_do_not_reproduce_the_paper(self):
         found, _ = self.findings(ALIKE)

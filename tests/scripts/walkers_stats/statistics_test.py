@@ -256,10 +256,16 @@ class ProportionsTest(unittest.TestCase):
 
     def test_fisher_hypergeometric(self):
         # the paper's 2 of 3 against 0 of 6: P(both tripods among case 2's three) = 7/84
-        self.assertAlmostEqual(statistics.fisher_greater(2, 3, 0, 6), 1 / 12, places=12)
-        self.assertAlmostEqual(statistics.fisher_greater(3, 3, 0, 3), 1 / 20, places=12)
-        self.assertAlmostEqual(statistics.fisher_greater(0, 3, 0, 6), 1.0, places=12)
-        self.assertAlmostEqual(statistics.fisher_greater(0, 1, 1, 2), 1.0, places=12)
+        self.assertAlmostEqual(statistics.fisher_p(2, 3, 0, 6, "greater"), 1 / 12, places=12)
+        self.assertAlmostEqual(statistics.fisher_p(3, 3, 0, 3, "greater"), 1 / 20, places=12)
+        self.assertAlmostEqual(statistics.fisher_p(0, 3, 0, 6, "greater"), 1.0, places=12)
+        self.assertAlmostEqual(statistics.fisher_p(0, 1, 1, 2, "greater"), 1.0, places=12)
+        # two-sided, 8 of 10 against 0 of 3: of the tables with 8 tripods among 13 runs,
+        # C(8, k) C(5, 10 - k) / C(13, 10) for k = 5..8 is 56, 140, 80, 10 / 286; only the
+        # observed k = 8 is as unlikely
+        self.assertAlmostEqual(statistics.fisher_p(8, 10, 0, 3, "two-sided"), 10 / 286, places=12)
+        self.assertAlmostEqual(statistics.fisher_p(0, 3, 8, 10, "two-sided"), 10 / 286, places=12)
+        self.assertAlmostEqual(statistics.fisher_p(2, 3, 1, 3, "two-sided"), 1.0, places=12)
 
     def test_sign_test(self):
         self.assertEqual(statistics.sign_test_greater([2] * 9, [1] * 9), (9, 9, 0.5 ** 9))
@@ -269,6 +275,63 @@ class ProportionsTest(unittest.TestCase):
         wins, n, p = statistics.sign_test_greater([1, 2, 3, 0], [0, 0, 0, 5])   # P(X >= 3 of 4)
         self.assertAlmostEqual(p, 5 / 16, places=12)
         self.assertEqual(statistics.sign_test_greater([1.0], [1.0]), (0, 0, None))
+
+
+def enumerated_signed_rank_p(x, y, alternative):
+    """The exact one-sided p of the signed-rank test by listing every way of signing the
+    ranks of the non-zero differences (midranks for ties)."""
+    d = [a - b for a, b in zip(x, y) if a != b]
+    ranks = stats.rankdata([abs(v) for v in d])
+    observed = sum(r for r, v in zip(ranks, d) if v > 0)
+    sums = [sum(r for r, s in zip(ranks, signs) if s) for signs in
+            itertools.product((False, True), repeat=len(d))]
+    if alternative == "greater":
+        return sum(s >= observed - 1e-9 for s in sums) / len(sums)
+    return sum(s <= observed + 1e-9 for s in sums) / len(sums)
+
+
+class SignedRankTest(unittest.TestCase):
+    """Wilcoxon's signed-rank test of replicate pairs, exact over every signing."""
+
+    def test_every_pair_one_way(self):
+        # 5 pairs all above: W+ = 15 and 1 of the 2^5 signings is as extreme
+        self.assertEqual(statistics.signed_rank_test([2, 3, 4, 5, 6], [1, 1, 1, 1, 1], "greater"),
+                         (15.0, 5, 1 / 32, True))
+        self.assertEqual(statistics.signed_rank_test([2, 3, 4, 5, 6], [1, 1, 1, 1, 1], "less"),
+                         (15.0, 5, 1.0, True))
+
+    def test_ties_and_zero_differences_against_the_listed_signings(self):
+        # differences 1, -1, 2, 2, 0, -3, 4, 0.5: the zeros leave, ties share midranks
+        x = [2.0, 1.0, 5.0, 6.0, 3.0, 1.0, 9.0, 3.5]
+        y = [1.0, 2.0, 3.0, 4.0, 3.0, 4.0, 5.0, 3.0]
+        for alternative in ("greater", "less"):
+            w, pairs, p, exact = statistics.signed_rank_test(x, y, alternative)
+            self.assertEqual((pairs, exact), (7, True))
+            self.assertEqual(w, 2.5 + 4.5 + 4.5 + 7 + 1)
+            self.assertAlmostEqual(p, enumerated_signed_rank_p(x, y, alternative), places=12)
+
+    def test_agrees_with_scipys_exact_wilcoxon_without_ties(self):
+        gen = np.random.default_rng(11)
+        for n in (3, 8, 12):
+            x, y = gen.normal(0.3, 1, n), gen.normal(0, 1, n)
+            for alternative in ("greater", "less"):
+                _, _, p, _ = statistics.signed_rank_test(x, y, alternative)
+                expected = stats.wilcoxon(x, y, alternative=alternative, method="exact").pvalue
+                self.assertAlmostEqual(p, expected, places=12)
+
+    def test_beyond_exact_a_seeded_monte_carlo(self):
+        gen = np.random.default_rng(3)
+        x, y = gen.normal(0.4, 1, 20), gen.normal(0, 1, 20)
+        first = statistics.signed_rank_test(x, y, "greater")
+        self.assertFalse(first[3])
+        self.assertEqual(statistics.signed_rank_test(x, y, "greater"), first)    # seeded
+        expected = stats.wilcoxon(x, y, alternative="greater", method="exact").pvalue
+        self.assertAlmostEqual(first[2], expected, delta=0.005)
+
+    def test_one_pair_and_none(self):
+        self.assertEqual(statistics.signed_rank_test([1.0], [0.0], "greater"), (1.0, 1, 0.5, True))
+        self.assertEqual(statistics.signed_rank_test([1.0, 2.0], [1.0, 2.0], "greater"),
+                         (0.0, 0, None, True))
 
 
 class TimeToBipedTest(unittest.TestCase):
