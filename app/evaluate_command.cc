@@ -92,10 +92,11 @@ int RunEvaluate(const EvaluateOptions& opt) {
   } else {
     std::printf("fitness %.4f  (distance %.3f m over leg length %.3f m)\n", r.fitness, r.distance, r.leg_length);
     std::printf("%s, %d footsteps, trunk on the ground or its feet %.0f %% of the time after the lock%s\n",
-                GaitName(r.gait), r.footsteps, 100.0 * r.trunk_contact_fraction, r.fell ? ", FELL" : "");
-    if (!r.failure.empty()) std::printf("integration failed: %s\n", r.failure.c_str());
+                GaitName(r.gait), r.footsteps, 100.0 * r.trunk_contact_fraction,
+                r.outcome == Outcome::kFell ? ", FELL" : "");
+    if (r.outcome == Outcome::kFailed) std::printf("integration failed: %s\n", r.reason.c_str());
     std::printf("simulated %.2f s in %.1f ms: %ld CVODE steps, %ld right-hand sides (preset %s)\n", r.sim_time,
-                r.wall_ms, r.cvode_steps, r.rhs_evals, r.preset.c_str());
+                r.wall_ms, r.integrator_stats.steps, r.integrator_stats.rhs_evals, r.preset.c_str());
     if (opt.ensemble > 0) {
       std::printf("ensemble of %d (relative tolerance x 1 + k 1e-4): fitness median %.4f, min %.4f, max %.4f; "
                   "%d bipeds, %d tripods, %d falls\n",

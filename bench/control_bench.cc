@@ -15,8 +15,8 @@ void Evaluation(benchmark::State& st, const Preset& preset) {
   }
   st.SetItemsProcessed(st.iterations());
   st.counters["fitness"] = r.fitness;
-  st.counters["cvode_steps"] = static_cast<double>(r.cvode_steps);
-  st.counters["rhs_evals"] = static_cast<double>(r.rhs_evals);
+  st.counters["cvode_steps"] = static_cast<double>(r.integrator_stats.steps);
+  st.counters["rhs_evals"] = static_cast<double>(r.integrator_stats.rhs_evals);
 }
 
 BENCHMARK_CAPTURE(Evaluation, default_original, OriginalPreset())->Unit(benchmark::kMillisecond);

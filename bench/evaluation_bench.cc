@@ -31,7 +31,7 @@ void EvaluateGenome(benchmark::State& st, const Genome& genome, const Evaluation
   st.SetItemsProcessed(st.iterations());
   st.counters["fitness"] = r.fitness;
   st.counters["steps"] = static_cast<double>(r.integrator_stats.steps);
-  st.counters["rhs_evals"] = static_cast<double>(r.rhs_evals);
+  st.counters["rhs_evals"] = static_cast<double>(r.integrator_stats.rhs_evals);
 }
 
 // the whole set under one variant: items are evaluations
@@ -42,7 +42,7 @@ void EvaluateSet(benchmark::State& st, const EvaluationSettings& settings) {
     steps = 0;
     for (const auto& [name, genome] : genomes) {
       const EvaluationResult r = Evaluate(genome, OriginalPreset(), settings);
-      steps += r.cvode_steps;
+      steps += r.integrator_stats.steps;
       benchmark::DoNotOptimize(r);
     }
   }

@@ -101,8 +101,8 @@ FitnessEnsemble EnsembleOf(const std::vector<EvaluationResult>& members) {
     ensemble.fitness.push_back(r.fitness);
     ensemble.bipeds += r.gait == Gait::kBiped ? 1 : 0;
     ensemble.tripods += r.gait == Gait::kTripod ? 1 : 0;
-    ensemble.falls += r.fell ? 1 : 0;
-    ensemble.cvode_steps.push_back(static_cast<double>(r.cvode_steps));
+    ensemble.falls += r.outcome == Outcome::kFell ? 1 : 0;
+    ensemble.cvode_steps.push_back(static_cast<double>(r.integrator_stats.steps));
     ensemble.wall_ms.push_back(r.wall_ms);
   }
   return ensemble;

@@ -47,6 +47,31 @@ EvaluationSettings SettingsOfIntegrator(const std::string& integrator, std::opti
   return settings;
 }
 
+namespace {
+
+// The fitness and gait an outcome gives: a walk scores paper eq. (6) and is a
+// tripod when its trunk supported it often enough; a fall or a failure scores
+// -1 and a cut-off kCutOffFitness, with no gait class.
+void ScoreOutcome(EvaluationResult* result) {
+  switch (result->outcome) {
+    case Outcome::kWalked:
+      result->fitness = result->distance / result->leg_length;
+      result->gait = result->trunk_contact_fraction >= kTripodContactFraction ? Gait::kTripod : Gait::kBiped;
+      return;
+    case Outcome::kFell:
+    case Outcome::kFailed:
+      result->fitness = -1.0;
+      result->gait = Gait::kNone;
+      return;
+    case Outcome::kCutOff:
+      result->fitness = kCutOffFitness;
+      result->gait = Gait::kNone;
+      return;
+  }
+}
+
+}  // namespace
+
 EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const EvaluationSettings& settings,
                           const TickObserver& observer, const StepObserver& step_observer) {
   const auto wall_start = std::chrono::steady_clock::now();
@@ -75,8 +100,10 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
   const long ticks = std::lround(settings.duration * kControlRate);
   long ticks_after_lock = 0, ticks_in_contact = 0;
   Kinematics kin;
-  // the bookkeeping of each tick's instant: trunk support, the welds' drift, the distance
-  const auto record = [&](double t, const State& state) {
+  // each tick's instant: its bookkeeping (trunk support, the welds' drift,
+  // the distance), then the fall check; false once the walker fell
+  const auto record_standing = [&](double t) {
+    const State& state = integrator.state();
     ComputeKinematics(model, state.q, state.v, &kin);
     if (t >= kLockDuration) {
       ++ticks_after_lock;
@@ -89,6 +116,9 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
       }
     }
     result.distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
+    if (!HasFallen(genome, preset, state)) return true;
+    result.outcome = Outcome::kFell;
+    return false;
   };
   // the controller's inputs from now on; a weld switched on first projects
   // the state onto every active weld, as the authors' program calls
@@ -108,7 +138,8 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
                                                                       &projected)
                                           : ProjectOntoWelds(model, inputs.welds, &projected);
       if (!projected_ok) {
-        result.failure = "projection onto the welds did not converge at t=" + std::to_string(integrator.time());
+        result.outcome = Outcome::kFailed;
+        result.reason = "projection onto the welds did not converge at t=" + std::to_string(integrator.time());
         return false;
       }
       integrator.SetState(projected);
@@ -118,40 +149,35 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
     if (inputs.joint_torque != integrator.inputs().joint_torque) integrator.SetTorques(inputs.joint_torque);
     return true;
   };
+  // the integration to tick k; false once it failed or passed the cut-off
   const auto advance = [&](long k) {
     const IntegrationStatus status = integrator.AdvanceTo(k / kControlRate);
-    if (!status.ok()) result.failure = status.reason;
-    // the authors' evolver scored an evaluation past its wall-clock limit -124
-    if (status.ok() && settings.cut_off_rhs > 0 && integrator.stats().rhs_evals > settings.cut_off_rhs) {
-      result.cut_off = true;
+    if (!status.ok()) {
+      result.outcome = Outcome::kFailed;
+      result.reason = status.reason;
       return false;
     }
-    return status.ok();
+    // the authors' evolver scored an evaluation past its wall-clock limit -124
+    if (settings.cut_off_rhs > 0 && integrator.stats().rhs_evals > settings.cut_off_rhs) {
+      result.outcome = Outcome::kCutOff;
+      return false;
+    }
+    return true;
   };
   for (long k = 0; k < ticks;) {
     double t = k / kControlRate;
-    record(t, integrator.state());
-    if (HasFallen(genome, preset, integrator.state())) {
-      result.fell = true;
-      break;
-    }
-    if (!hold(controller.Tick(t, integrator.state()))) break;
+    if (!record_standing(t) || !hold(controller.Tick(t, integrator.state()))) break;
     if (controller.awaits_extra_step()) {
       if (observer) observer(t, integrator.state(), controller);
       if (!advance(++k)) break;
       t = k / kControlRate;
-      record(t, integrator.state());
-      if (HasFallen(genome, preset, integrator.state())) {
-        result.fell = true;
-        break;
-      }
-      if (!hold(controller.FinishTick(integrator.state()))) break;
+      if (!record_standing(t) || !hold(controller.FinishTick(integrator.state()))) break;
     }
     if (observer) observer(t, integrator.state(), controller);
     if (!advance(++k)) break;
   }
-  const bool scored = !result.fell && result.failure.empty() && !result.cut_off;
-  if (scored) {
+  // a walk is measured where it ended
+  if (result.outcome == Outcome::kWalked) {
     ComputeKinematics(model, integrator.state().q, integrator.state().v, &kin);
     result.distance = std::min(kin.legs[kLeft].ankle.p.x(), kin.legs[kRight].ankle.p.x());
   }
@@ -161,15 +187,10 @@ EvaluationResult Evaluate(const Genome& genome, const Preset& preset, const Eval
   result.footsteps = controller.footsteps();
   result.trunk_contact_fraction =
       ticks_after_lock > 0 ? static_cast<double>(ticks_in_contact) / static_cast<double>(ticks_after_lock) : 0.0;
-  result.gait = !scored                                                    ? Gait::kNone
-                : result.trunk_contact_fraction >= kTripodContactFraction ? Gait::kTripod
-                                                                           : Gait::kBiped;
-  result.fitness = result.cut_off ? kCutOffFitness : scored ? result.distance / result.leg_length : -1.0;
+  ScoreOutcome(&result);
 
   result.integrator = settings.integrator.method;
   result.integrator_stats = integrator.stats();
-  result.cvode_steps = result.integrator_stats.steps;
-  result.rhs_evals = result.integrator_stats.rhs_evals;
   result.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
   return result;

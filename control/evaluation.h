@@ -14,7 +14,8 @@
 
 namespace walkers {
 
-// A walker that fell or failed has no gait class.
+// A walker that did not walk the whole duration (it fell, failed or was cut
+// off) has no gait class.
 enum class Gait { kBiped, kTripod, kNone };
 
 // "biped", "tripod", "none"
@@ -76,22 +77,27 @@ EvaluationSettings SettingsOfIntegrator(const std::string& integrator, std::opti
                                         std::optional<long> cut_off_rhs = std::nullopt,
                                         const IntegrationChoiceNames& names = {});
 
+// How an evaluation ended; its fitness and gait follow from it.
+enum class Outcome {
+  kWalked,  // walked the whole duration: paper eq. (6), a biped or a tripod
+  kFell,    // fell (HasFallen): fitness -1, no gait class
+  kFailed,  // the integration or a projection onto the welds failed: fitness -1, no gait class
+  kCutOff,  // took more right-hand sides than EvaluationSettings::cut_off_rhs: kCutOffFitness, no gait class
+};
+
 struct EvaluationResult {
-  double fitness = -1;         // paper eq. (6): distance / leg length; -1 for a fall or a failure, -124 cut off
+  Outcome outcome = Outcome::kWalked;
+  std::string reason;          // why it failed (Outcome::kFailed); empty otherwise
+  double fitness = -1;         // from the outcome: paper eq. (6) distance / leg length for a walk
   double distance = 0;         // [m] min(x_footL, x_footR) when the evaluation ended
   double leg_length = 0;       // [m] tibia + femur
-  bool fell = false;
-  bool cut_off = false;        // stopped past EvaluationSettings::cut_off_rhs: fitness kCutOffFitness
-  std::string failure;         // integration failure's reason, empty if none
   int footsteps = 0;           // touchdowns
   double trunk_contact_fraction = 0;  // of the 30 Hz ticks after the lock
-  Gait gait = Gait::kBiped;
+  Gait gait = Gait::kBiped;    // from the outcome and trunk_contact_fraction
   double sim_time = 0;         // [s] simulated
   double wall_ms = 0;          // [ms] wall time (not deterministic)
-  long cvode_steps = 0;
-  long rhs_evals = 0;
   IntegrationMethod integrator = IntegrationMethod::kCvode;  // the method that integrated it
-  IntegratorStats integrator_stats;  // every counter of the integrator
+  IntegratorStats integrator_stats;  // every counter of the integrator: steps, right-hand sides, ...
   double max_weld_drift = 0;   // [m] furthest a planted foot's centre moved from its weld, at ticks
   std::string preset;
 };

@@ -8,19 +8,19 @@ nlohmann::json EvaluationToJson(const EvaluationResult& r, const FitnessEnsemble
   nlohmann::json out = {{"fitness", r.fitness},
                         {"distance", r.distance},
                         {"leg_length", r.leg_length},
-                        {"fell", r.fell},
-                        {"cut_off", r.cut_off},
+                        {"fell", r.outcome == Outcome::kFell},
+                        {"cut_off", r.outcome == Outcome::kCutOff},
                         {"failure", nullptr},
                         {"footsteps", r.footsteps},
                         {"trunk_contact_fraction", r.trunk_contact_fraction},
                         {"gait", GaitName(r.gait)},
                         {"sim_time", r.sim_time},
                         {"wall_ms", r.wall_ms},
-                        {"cvode_steps", r.cvode_steps},
-                        {"rhs_evals", r.rhs_evals},
+                        {"cvode_steps", r.integrator_stats.steps},
+                        {"rhs_evals", r.integrator_stats.rhs_evals},
                         {"integrator", IntegrationMethodName(r.integrator)},
                         {"preset", r.preset}};
-  if (!r.failure.empty()) out["failure"] = r.failure;
+  if (r.outcome == Outcome::kFailed) out["failure"] = r.reason;
   if (ensemble) {
     const FitnessEnsemble& e = *ensemble;
     out["ensemble"] = {{"size", e.fitness.size()}, {"fitness", e.fitness},   {"fitness_median", e.Median()},

@@ -10,9 +10,11 @@
 
 namespace walkers {
 
-// The result's fields ("failure" null when the integration did not fail),
-// and, when `ensemble` is given, an "ensemble" object of its size, fitnesses,
-// their median, minimum and maximum, and its gait classes and falls.
+// The result's fields, its outcome spelt as "fell", "cut_off" and "failure"
+// (a failure's reason, null otherwise), its integrator's steps and
+// right-hand sides as "cvode_steps" and "rhs_evals", and, when `ensemble` is
+// given, an "ensemble" object of its size, fitnesses, their median, minimum
+// and maximum, and its gait classes and falls.
 nlohmann::json EvaluationToJson(const EvaluationResult& result, const FitnessEnsemble* ensemble = nullptr);
 
 }  // namespace walkers

@@ -73,7 +73,7 @@ double ExpectedCost(const Individual& child, const Archive& archive) {
   for (const Lineage::Parent& parent : child.lineage.parents) {
     for (const Individual& member : archive.members()) {
       if (member.generation == parent.generation && member.child == parent.child) {
-        cost = std::max(cost, static_cast<double>(member.result.cvode_steps));
+        cost = std::max(cost, static_cast<double>(member.result.integrator_stats.steps));
       }
     }
   }

@@ -86,9 +86,9 @@ class Unpacker {
 // Every field of a result, the one list both directions use.
 template <typename Archive, typename Result>
 void ResultFields(Archive& a, Result& r) {
-  a(r.fitness), a(r.distance), a(r.leg_length), a(r.fell), a(r.cut_off), a(r.failure), a(r.footsteps);
-  a(r.trunk_contact_fraction), a(r.gait), a(r.sim_time), a(r.wall_ms), a(r.cvode_steps), a(r.rhs_evals);
-  a(r.integrator), a(r.integrator_stats), a(r.max_weld_drift), a(r.preset);
+  a(r.outcome), a(r.reason), a(r.fitness), a(r.distance), a(r.leg_length), a(r.footsteps);
+  a(r.trunk_contact_fraction), a(r.gait), a(r.sim_time), a(r.wall_ms), a(r.integrator), a(r.integrator_stats);
+  a(r.max_weld_drift), a(r.preset);
 }
 
 // the ranks run the same program on the same kind of machine: settings and

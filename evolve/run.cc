@@ -137,7 +137,7 @@ GenerationSummary EvolutionRun::FinishGeneration(const BreedingInputs& in, const
   s.best_femur = archive_.best().genome[kFemurLength];
   s.best_tibia = archive_.best().genome[kTibiaLength];
   s.best_gait = archive_.best().result.gait;
-  for (const Individual& c : children) s.falls += c.result.fell ? 1 : 0;
+  for (const Individual& c : children) s.falls += c.result.outcome == Outcome::kFell ? 1 : 0;
   s.evaluations = static_cast<int>(children.size());
   s.evaluation_seconds = evaluated.seconds;
   s.evals_per_s = evaluated.seconds > 0 ? children.size() / evaluated.seconds : 0.0;

@@ -40,10 +40,10 @@ std::string EvaluationRow(const Individual& ind) {
   row << ind.generation << ',' << ind.child << ',' << ind.lineage.Text();
   for (double g : ind.genome.genes) row << ',' << FormatExact(g);
   const EvaluationResult& r = ind.result;
-  row << ',' << FormatExact(r.fitness) << ',' << FormatExact(r.distance) << ',' << (r.fell ? 1 : 0) << ','
-      << GaitName(r.gait) << ',' << r.footsteps << ',' << FormatExact(r.trunk_contact_fraction) << ','
-      << r.cvode_steps << ',' << (r.failure.empty() ? "" : CsvQuoted(r.failure)) << ',' << FormatExact(r.wall_ms)
-      << '\n';
+  row << ',' << FormatExact(r.fitness) << ',' << FormatExact(r.distance) << ','
+      << (r.outcome == Outcome::kFell ? 1 : 0) << ',' << GaitName(r.gait) << ',' << r.footsteps << ','
+      << FormatExact(r.trunk_contact_fraction) << ',' << r.integrator_stats.steps << ','
+      << (r.outcome == Outcome::kFailed ? CsvQuoted(r.reason) : "") << ',' << FormatExact(r.wall_ms) << '\n';
   return row.str();
 }
 
@@ -66,12 +66,12 @@ json IndividualToJson(const Individual& ind) {
           {"parents", ind.lineage.Text()},
           {"fitness", r.fitness},
           {"distance", r.distance},
-          {"fell", r.fell},
+          {"fell", r.outcome == Outcome::kFell},
           {"gait", GaitName(r.gait)},
           {"footsteps", r.footsteps},
           {"trunk_contact_fraction", r.trunk_contact_fraction},
-          {"cvode_steps", r.cvode_steps},
-          {"failure", r.failure},
+          {"cvode_steps", r.integrator_stats.steps},
+          {"failure", r.reason},
           {"genome", GenomeToJson(ind.genome)}};
 }
 
@@ -109,6 +109,20 @@ Gait GaitFromName(const JsonFields& f, const std::string& key) {
   return Gait::kBiped;  // not reached: OneOf refused it
 }
 
+// The outcome a member's fields spell: "fell", a "failure"'s reason, or a
+// cut-off's fitness (control/evaluation.h).
+Outcome OutcomeFromFields(const JsonFields& f, double fitness) {
+  const bool fell = f.Bool("fell");
+  const bool failed = !f.String("failure").empty();
+  if (fell && failed) {
+    f.Fail("failure", "= " + f.Get("failure").dump() + " names a failure, but the walker fell: an evaluation falls or "
+                      "fails, not both");
+  }
+  if (fell) return Outcome::kFell;
+  if (failed) return Outcome::kFailed;
+  return fitness == kCutOffFitness ? Outcome::kCutOff : Outcome::kWalked;
+}
+
 // An archive member of a run of `generations` generations of `population` children.
 Individual IndividualFromJson(const JsonFields& f, int generations, int population) {
   f.RequireOnly(KeysOf(IndividualToJson(Individual{})));
@@ -127,14 +141,12 @@ Individual IndividualFromJson(const JsonFields& f, int generations, int populati
   EvaluationResult& r = ind.result;
   r.fitness = f.Number("fitness");
   r.distance = f.Number("distance");
-  r.fell = f.Bool("fell");
-  // a cut-off is its fitness (control/evaluation.h)
-  r.cut_off = r.fitness == kCutOffFitness;
+  r.outcome = OutcomeFromFields(f, r.fitness);
+  r.reason = f.String("failure");
   r.gait = GaitFromName(f, "gait");
   r.footsteps = static_cast<int>(f.Integer("footsteps", 0, std::numeric_limits<int>::max()));
   r.trunk_contact_fraction = f.Number("trunk_contact_fraction", {0.0, 1.0});
-  r.cvode_steps = static_cast<long>(f.Integer("cvode_steps", 0, std::numeric_limits<long>::max()));
-  r.failure = f.String("failure");
+  r.integrator_stats.steps = static_cast<long>(f.Integer("cvode_steps", 0, std::numeric_limits<long>::max()));
   r.leg_length = ind.genome.leg_length();
   return ind;
 }

@@ -143,9 +143,9 @@ py::dict ResultArrays(const std::vector<EvaluationResult>& results) {
   py::list gait;
   for (py::ssize_t i = 0; i < n; ++i) {
     fitness.mutable_data()[i] = results[i].fitness;
-    fell.mutable_data()[i] = results[i].fell;
+    fell.mutable_data()[i] = results[i].outcome == Outcome::kFell;
     footsteps.mutable_data()[i] = results[i].footsteps;
-    cvode_steps.mutable_data()[i] = results[i].cvode_steps;
+    cvode_steps.mutable_data()[i] = results[i].integrator_stats.steps;
     gait.append(GaitName(results[i].gait));
   }
   py::dict out;

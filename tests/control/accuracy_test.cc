@@ -191,7 +191,7 @@ TEST_F(EnsembleTest, AccuracyMembersDifferOnlyInTheStartPose) {
                                                  EvaluateRaised(step)};
   for (int k = 0; k < 3; ++k) {
     EXPECT_EQ(e.fitness[k], members[k].fitness) << k;
-    EXPECT_EQ(e.cvode_steps[k], static_cast<double>(members[k].cvode_steps)) << k;
+    EXPECT_EQ(e.cvode_steps[k], static_cast<double>(members[k].integrator_stats.steps)) << k;
   }
   // a raise changes the walk's arithmetic
   EXPECT_NE(members[0].distance, members[2].distance);
@@ -244,11 +244,11 @@ TEST_F(EnsembleTest, AnOddEnsembleTakesItsMiddleMemberFromAGivenEvaluation) {
   // only for the middle member
   EvaluationResult marked = plain;
   marked.fitness = 123.0;
-  marked.fell = true;
+  marked.outcome = Outcome::kFell;
   marked.gait = Gait::kTripod;
   const FitnessEnsemble e = Ensemble(3, &marked);
   EXPECT_EQ(e.fitness, (std::vector<double>{evaluated.fitness[0], 123.0, evaluated.fitness[2]}));
-  EXPECT_EQ(e.falls, evaluated.falls + (plain.fell ? 0 : 1));
+  EXPECT_EQ(e.falls, evaluated.falls + (plain.outcome == Outcome::kFell ? 0 : 1));
   EXPECT_EQ(e.bipeds, evaluated.bipeds - (plain.gait == Gait::kBiped ? 1 : 0));
   // an even ensemble has no member at the settings themselves
   EXPECT_EQ(Ensemble(2, &marked).fitness, Ensemble(2).fitness);

@@ -23,8 +23,8 @@ EvaluationResult SomeResult() {
   r.gait = Gait::kTripod;
   r.sim_time = 15.0;
   r.wall_ms = 99.5;
-  r.cvode_steps = 12345;
-  r.rhs_evals = 23456;
+  r.integrator_stats.steps = 12345;
+  r.integrator_stats.rhs_evals = 23456;
   r.preset = "paper";
   return r;
 }
@@ -50,27 +50,34 @@ TEST(EvaluationJsonTest, HoldsEveryFieldOfTheResult) {
   EXPECT_FALSE(j.contains("ensemble"));
 }
 
-TEST(EvaluationJsonTest, NamesTheIntegratorAndACutOff) {
+TEST(EvaluationJsonTest, NamesTheIntegrator) {
   EvaluationResult r = SomeResult();
   r.integrator = IntegrationMethod::kRkMerson;
-  r.cut_off = true;
-  r.fitness = kCutOffFitness;
-  const nlohmann::json j = EvaluationToJson(r);
-  EXPECT_EQ(j.at("integrator").get<std::string>(), "rk-merson");
-  EXPECT_TRUE(j.at("cut_off").get<bool>());
-  EXPECT_EQ(j.at("fitness").get<double>(), -124.0);
+  EXPECT_EQ(EvaluationToJson(r).at("integrator").get<std::string>(), "rk-merson");
 }
 
-TEST(EvaluationJsonTest, NamesAFailureAndAFall) {
-  EvaluationResult r = SomeResult();
-  r.fitness = -1;
-  r.fell = true;
-  r.gait = Gait::kNone;
-  r.failure = "CVODE: too much work";
-  const nlohmann::json j = EvaluationToJson(r);
-  EXPECT_TRUE(j.at("fell").get<bool>());
-  EXPECT_EQ(j.at("gait").get<std::string>(), "none");
-  EXPECT_EQ(j.at("failure").get<std::string>(), "CVODE: too much work");
+// The outcome is spelt by three fields: "fell", "cut_off", and "failure" with
+// a failure's reason (null otherwise).
+TEST(EvaluationJsonTest, SpellsEachOutcome) {
+  struct Case {
+    Outcome outcome;
+    bool fell, cut_off, failed;
+  };
+  for (const Case& c : {Case{Outcome::kWalked, false, false, false}, Case{Outcome::kFell, true, false, false},
+                        Case{Outcome::kFailed, false, false, true}, Case{Outcome::kCutOff, false, true, false}}) {
+    SCOPED_TRACE(static_cast<int>(c.outcome));
+    EvaluationResult r = SomeResult();
+    r.outcome = c.outcome;
+    if (c.failed) r.reason = "CVODE: too much work";
+    const nlohmann::json j = EvaluationToJson(r);
+    EXPECT_EQ(j.at("fell").get<bool>(), c.fell);
+    EXPECT_EQ(j.at("cut_off").get<bool>(), c.cut_off);
+    if (c.failed) {
+      EXPECT_EQ(j.at("failure").get<std::string>(), "CVODE: too much work");
+    } else {
+      EXPECT_TRUE(j.at("failure").is_null());
+    }
+  }
 }
 
 TEST(EvaluationJsonTest, SummarisesTheEnsemble) {

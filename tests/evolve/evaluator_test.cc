@@ -79,17 +79,17 @@ TEST(ThreadEvaluatorTest, GivesWhatEvaluateGives) {
   for (const Individual& c : children) {
     const EvaluationResult direct = Evaluate(c.genome, preset, settings);
     EXPECT_EQ(c.result.fitness, direct.fitness);
-    EXPECT_EQ(c.result.cvode_steps, direct.cvode_steps);
-    EXPECT_GT(c.result.cvode_steps, 0);
+    EXPECT_EQ(c.result.integrator_stats.steps, direct.integrator_stats.steps);
+    EXPECT_GT(c.result.integrator_stats.steps, 0);
   }
 }
 
 TEST(ExpectedCostTest, IsTheCostliestParentInTheArchive) {
   Archive archive(4);
   std::vector<Individual> members = {WithFitness(2, 0, 5.0), WithFitness(2, 1, 4.0), WithFitness(3, 5, 3.0)};
-  members[0].result.cvode_steps = 100;
-  members[1].result.cvode_steps = 900;
-  members[2].result.cvode_steps = 300;
+  members[0].result.integrator_stats.steps = 100;
+  members[1].result.integrator_stats.steps = 900;
+  members[2].result.integrator_stats.steps = 300;
   archive.Merge(members);
   Individual child = WithFitness(4, 0, -1.0);
   child.lineage = Lineage::Of({{2, 0}, {3, 5}});

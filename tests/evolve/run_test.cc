@@ -353,6 +353,16 @@ TEST_F(CheckpointTest, AnArchiveMembersLineageThatIsNoneIsRefusedNamingIt) {
   ExpectRefusedNaming("checkpoint.json", "field 'archive[0].parents' = \"0/0 mutated");
 }
 
+// an evaluation has one outcome: it falls or fails, not both
+TEST_F(CheckpointTest, AnArchiveMemberThatFellAndFailedIsRefusedNamingIt) {
+  EditFile(Checkpoint(), [](std::string* t) {
+    t->replace(t->find("\"failure\":\"\""), 12, "\"failure\":\"CVODE failed\"");
+    t->replace(t->find("\"fell\":false"), 12, "\"fell\":true");
+  });
+  ExpectRefusedNaming("checkpoint.json",
+                      "field 'archive[0].failure' = \"CVODE failed\" names a failure, but the walker fell");
+}
+
 TEST_F(CheckpointTest, CsvFilesThatDisagreeWithTheCheckpointAreRefused) {
   // a gene of row 3 is no number
   EditFile(RunFiles(Dir("a")).evaluations, [](std::string* t) {
