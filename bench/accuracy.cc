@@ -27,7 +27,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
@@ -37,6 +36,7 @@
 #include "bench/variants.h"
 #include "control/accuracy.h"
 #include "evolve/evaluator.h"
+#include "files/durable_file.h"
 
 using namespace walkers;
 
@@ -234,11 +234,7 @@ int Run(const Options& opt) {
   std::printf("%zu genomes: %d fail their own rules (scripts/accuracy.py judges the rest: the KS tests with Holm's "
               "correction, the drift); median over the set %.0f steps, %.1f ms per evaluation\n",
               genomes.size(), failed, Median(steps), Median(ms));
-  if (!opt.json.empty()) {
-    std::ofstream file(opt.json);
-    file << out.dump(1) << "\n";
-    if (!file) throw std::runtime_error("cannot write " + opt.json);
-  }
+  if (!opt.json.empty()) WriteFileAtomically(opt.json, out.dump(1) + "\n");
   return failed == 0 ? 0 : 1;
 }
 
