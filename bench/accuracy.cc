@@ -9,12 +9,17 @@
 // over the set. Not a Google Benchmark: a measurement.
 //
 //   accuracy [--ensemble N] [--threads T] [--json FILE] [--variant NAME] [--tolerances R,Q,V]
-//            [--perturbation start|tolerance] [--step S] GENOME|DIR...
+//            [--perturbation start|tolerance] [--step S] [--reference FILE]... GENOME|DIR...
 //
 // --variant takes one of bench/variants.h; --tolerances after it changes that
 // variant's tolerances. --perturbation tolerance perturbs the relative
 // tolerance instead, as the re-scores of a run's finals do; --step sets the
 // step between neighbouring members (m for start, relative for tolerance).
+// --reference takes the reference ensembles from files that an earlier run
+// wrote with --json (their "tight" ensembles, matched by genome name, of the
+// same perturbation) instead of evaluating them: candidate settings are then
+// judged against one reference, 100x tighter than the settings that run had,
+// and each costs only its own ensembles.
 //
 // GENOME|DIR: genome files, or folders whose *.json are taken in name order.
 // The default ensemble is 25, the criterion's. Exit status: 0 when every
@@ -37,6 +42,7 @@
 #include "control/accuracy.h"
 #include "evolve/evaluator.h"
 #include "files/durable_file.h"
+#include "files/input_file.h"
 
 using namespace walkers;
 
@@ -50,6 +56,7 @@ struct Options {
   std::string settings_name = "production";
   Perturbation perturbation = kAccuracyPerturbation;
   bool step_given = false;
+  std::vector<std::string> references;  // earlier --json files whose reference ensembles are reused
   std::vector<std::string> genomes;
 };
 
@@ -65,7 +72,7 @@ nlohmann::json ToJson(const FitnessEnsemble& e) {
 int Usage(const char* program) {
   std::fprintf(stderr,
                "usage: %s [--ensemble N] [--threads T] [--json FILE] [--variant NAME] [--tolerances R,Q,V] "
-               "[--perturbation start|tolerance] [--step S] GENOME|DIR...\n",
+               "[--perturbation start|tolerance] [--step S] [--reference FILE]... GENOME|DIR...\n",
                program);
   return 2;
 }
@@ -135,6 +142,8 @@ Options Parse(const std::vector<std::string>& args) {
     } else if (a == "--step") {
       opt.perturbation.step = ParsePositive(a, value());
       opt.step_given = true;
+    } else if (a == "--reference") {
+      opt.references.push_back(value());
     } else if (a.rfind("--", 0) == 0) {
       throw std::invalid_argument("unknown option " + a);
     } else if (std::filesystem::is_directory(a)) {
@@ -156,8 +165,51 @@ Options Parse(const std::vector<std::string>& args) {
   return opt;
 }
 
+// A reference saved by an earlier run: the settings it was 100x tighter than
+// and its ensemble of every genome, by name.
+struct SavedReference {
+  nlohmann::json settings;  // relative_tolerance, absolute_tolerance_position, absolute_tolerance_velocity
+  std::vector<std::pair<std::string, FitnessEnsemble>> ensembles;
+};
+
+SavedReference LoadReferences(const Options& opt) {
+  SavedReference saved;
+  const char* kind = opt.perturbation.kind == PerturbationKind::kStartPose ? "start" : "tolerance";
+  for (const std::string& file : opt.references) {
+    const nlohmann::json j = LoadJsonFile(file);
+    // members perturbed alike; a smaller odd ensemble's members are some of
+    // the reference's (a screening, not a verdict: the criterion's are 25)
+    if (j.at("perturbation").at("kind") != kind || j.at("perturbation").at("step") != opt.perturbation.step) {
+      throw std::invalid_argument(file + ": its ensembles are perturbed by " + j.at("perturbation").dump() +
+                                  ", not as this run's");
+    }
+    const nlohmann::json settings = {{"relative_tolerance", j.at("relative_tolerance")},
+                                     {"absolute_tolerance_position", j.at("absolute_tolerance_position")},
+                                     {"absolute_tolerance_velocity", j.at("absolute_tolerance_velocity")}};
+    if (!saved.settings.is_null() && settings != saved.settings) {
+      throw std::invalid_argument(file + ": its reference is 100x tighter than " + settings.dump() +
+                                  ", another file's than " + saved.settings.dump());
+    }
+    saved.settings = settings;
+    for (const nlohmann::json& g : j.at("genomes")) {
+      const nlohmann::json& t = g.at("tight");
+      FitnessEnsemble e;
+      e.fitness = t.at("fitness").get<std::vector<double>>();
+      e.bipeds = t.at("bipeds").get<int>();
+      e.tripods = t.at("tripods").get<int>();
+      e.falls = t.at("falls").get<int>();
+      e.cvode_steps = {t.at("steps_median").get<double>()};
+      e.wall_ms = {t.at("wall_ms_median").get<double>()};
+      saved.ensembles.emplace_back(g.at("genome").get<std::string>(), e);
+    }
+  }
+  return saved;
+}
+
 int Run(const Options& opt) {
   const EvaluationSettings tight = HundredTimesTighter(opt.production);
+  const SavedReference saved = LoadReferences(opt);
+  const bool evaluate_reference = opt.references.empty();
   std::vector<Genome> genomes;
   for (const std::string& file : opt.genomes) genomes.push_back(LoadGenome(file));
 
@@ -165,7 +217,8 @@ int Run(const Options& opt) {
   // each result has its slot, so the output does not depend on the number of
   // threads
   const Preset preset = OriginalPreset();
-  const std::vector<EvaluationSettings> settings = {opt.production, tight};
+  std::vector<EvaluationSettings> settings = {opt.production};
+  if (evaluate_reference) settings.push_back(tight);
   std::vector<EvaluationSettings> members;  // [settings][member]
   for (const EvaluationSettings& s : settings) {
     for (int k = 0; k < opt.ensemble; ++k) {
@@ -186,15 +239,25 @@ int Run(const Options& opt) {
   for (size_t i = 0; i < genomes.size(); ++i) {
     const auto first = flat.begin() + static_cast<long>(i * members.size());
     production.push_back(EnsembleOf({first, first + opt.ensemble}));
-    tighter.push_back(EnsembleOf({first + opt.ensemble, first + 2 * opt.ensemble}));
+    if (evaluate_reference) {
+      tighter.push_back(EnsembleOf({first + opt.ensemble, first + 2 * opt.ensemble}));
+      continue;
+    }
+    const std::string name = std::filesystem::path(opt.genomes[i]).stem().string();
+    const auto found = std::find_if(saved.ensembles.begin(), saved.ensembles.end(),
+                                    [&name](const auto& entry) { return entry.first == name; });
+    if (found == saved.ensembles.end()) throw std::invalid_argument("no reference ensemble of " + name);
+    tighter.push_back(found->second);
   }
 
   const auto& s = opt.production.integrator;
   const char* kind = opt.perturbation.kind == PerturbationKind::kStartPose ? "start" : "tolerance";
-  std::printf("settings: %s (rtol %g, atol_q %g, atol_v %g), reference: 100x tighter; ensembles of %d, "
+  const std::string reference =
+      evaluate_reference ? "100x tighter" : "saved, 100x tighter than " + saved.settings.dump();
+  std::printf("settings: %s (rtol %g, atol_q %g, atol_v %g), reference: %s; ensembles of %d, "
               "perturbation %s in steps of %g\n",
               opt.settings_name.c_str(), s.relative_tolerance, s.absolute_tolerance_position,
-              s.absolute_tolerance_velocity, opt.ensemble, kind, opt.perturbation.step);
+              s.absolute_tolerance_velocity, reference.c_str(), opt.ensemble, kind, opt.perturbation.step);
   std::printf("%-32s %26s %26s %8s %8s %5s %5s %9s %5s %9s %9s\n", "genome", "median [IQR]",
               "reference: median [IQR]", "rel.diff", "regular", "gait", "fall", "walker", "pass", "steps", "ms");
   nlohmann::json out = {{"settings", opt.settings_name},
@@ -204,6 +267,7 @@ int Run(const Options& opt) {
                         {"ensemble", opt.ensemble},
                         {"perturbation", {{"kind", kind}, {"step", opt.perturbation.step}}},
                         {"genomes", nlohmann::json::array()}};
+  if (!evaluate_reference) out["reference"] = {{"files", opt.references}, {"tighter_than", saved.settings}};
   int failed = 0;
   std::vector<double> steps, ms;
   for (size_t i = 0; i < genomes.size(); ++i) {
