@@ -17,11 +17,15 @@
 # run of replicates 1..R must have finished (R = 0: no statistics, the finished
 # runs only). In TO, the staged files and run folders replace their namesakes;
 # nothing else of TO is touched. WALKERS names the program (build/app/walkers
-# by default).
+# by default), WALKERS_PYTHON the Python of the statistics (as the program
+# picks it: /usr/bin/python3 where there is one, else python3). Under a
+# cut-off, each run's cut-offs per generation are kept in its cut_offs.csv
+# (`walkers_stats cut-offs`) before its evaluations.csv is left out.
 set -euo pipefail
 from=${1:?the reproduction folder} replicates=${2:?how many replicates} to=${3:?the folder to stage into}
 shift 3
 walkers=${WALKERS:-build/app/walkers}
+python=${WALKERS_PYTHON:-$([ -x /usr/bin/python3 ] && echo /usr/bin/python3 || echo python3)}
 
 staging=$(mktemp -d "${to%/}.staging.XXXXXX")
 trap 'rm -rf "$staging"' EXIT
@@ -53,7 +57,7 @@ for run in "$from"/*-[0-9]*/; do
   generations=$g
   # a run continued from committed results has its finals.json but no evaluations.csv
   files=(config.json checkpoint.json generations.csv archive.json best.json)
-  for f in evaluations.csv finals.json; do [ -f "$run/$f" ] && files+=("$f"); done
+  for f in evaluations.csv finals.json cut_offs.csv; do [ -f "$run/$f" ] && files+=("$f"); done
   if [ ! -f "$run/evaluations.csv" ] && [ ! -f "$run/finals.json" ]; then
     echo "stage_results: $run has neither evaluations.csv nor finals.json; its finals cannot be read" >&2
     exit 1
@@ -69,7 +73,9 @@ for run in "${kept[@]}"; do
     echo "stage_results: $run has finished but has no finals.json; resume the reproduction to write it" >&2
     exit 1
   fi
-  copy_run "$run" config.json checkpoint.json generations.csv archive.json best.json finals.json
+  files=(config.json checkpoint.json generations.csv archive.json best.json finals.json)
+  for f in evaluations.csv cut_offs.csv; do [ -f "$run/$f" ] && files+=("$f"); done
+  copy_run "$run" "${files[@]}"
 done
 [ "$replicates" -gt 0 ] || [ ${#kept[@]} -gt 0 ] || { echo "stage_results: no finished runs in $from" >&2; exit 1; }
 
@@ -80,6 +86,12 @@ done
 # reproduction.json, the statistics and the figures
 if [ "$replicates" -gt 0 ]; then
   "$walkers" reproduce --replicates "$replicates" --generations "$generations" --resume --out "$staging" "$@"
+fi
+# the cut-offs outlive the per-evaluation data (runs without a cut-off have none to keep)
+with_evaluations=()
+for run in "$staging"/*/; do [ -f "$run/evaluations.csv" ] && with_evaluations+=("${run%/}"); done
+if [ ${#with_evaluations[@]} -gt 0 ]; then
+  "$python" "$(dirname "$0")/walkers_stats" cut-offs "${with_evaluations[@]}" >/dev/null
 fi
 rm -f "$staging"/*/evaluations.csv "$staging"/*/walkers.lock "$staging"/walkers.lock
 # into TO, each staged file or run folder replacing its namesake; TO's other contents stay

@@ -312,7 +312,8 @@ def claim_case2_more_tripods(rep):
     ko, no = tripod_finals(other_runs), len(other_runs)
     p = fisher_p(k2, n2, ko, no, "greater")
     # paired: per replicate, case 2's tripod (1 or 0) against the mean of cases 1 and 3
-    t1, t2, t3 = replicate_pairs(runs, (c1, c2, c3), lambda r: float(r["best_gait"][-1] == "tripod"))
+    t1, t2, t3 = replicate_pairs(runs, (c1, c2, c3),
+                                 lambda r: float(r["best_gait"][-1] == "tripod"))
     paired, paired_words = paired_sign(t2, [(a + b) / 2 for a, b in zip(t1, t3)],
                                        "case 2 > cases 1 and 3")
     w2, wo = wilson_interval(k2, n2), wilson_interval(ko, no)

@@ -5,6 +5,13 @@
                                  beside ours when PATH names a checkout of theirs)
   figures DIR [--authors PATH]   DIR/figures/ (Fig. 9 with the authors' runs, given PATH)
   authors PATH                   check that PATH holds the authors' runs, and count them
+  experiments ROOT [--authors PATH] [--readme FILE]
+                                 the experiments side by side: ROOT/experiments.md and
+                                 .json, ROOT/figures/experiments-*, and FILE's block of
+                                 the claims (ROOT: the committed results, docs/results)
+  cut-offs RUN_DIR...            the cut_offs.csv of each run made under a cut-off, from its
+                                 evaluations.csv, so that its cut-offs outlive that
+                                 (scripts/stage_results.sh)
 
 `walkers reproduce` runs summary, then figures (and authors first, given
 --authors-checkout). Bad input is an error naming the file and the field (or line and
@@ -14,7 +21,7 @@ import argparse
 import sys
 
 from . import authors as the_authors
-from . import figures, load, summary
+from . import cut_offs, figures, load, side_by_side, summary
 
 
 def load_checkout(path):
@@ -46,6 +53,22 @@ def run_authors(args):
     return 0
 
 
+def run_experiments(args):
+    """experiments ROOT: the experiments side by side."""
+    return side_by_side.write(args.root, load_checkout(args.authors), args.readme)
+
+
+def run_cut_offs(args):
+    """cut-offs RUN_DIR...: the cut_offs.csv of each run made under a cut-off (every
+    run read before any is written)."""
+    counted = [(run_dir, cut_offs.run_counts(run_dir) if cut_offs.run_cut_off(run_dir) else None)
+               for run_dir in args.run_dirs]
+    for run_dir, counts in counted:
+        print(f"{run_dir}: no cut-off, nothing to keep" if counts is None else
+              f"wrote {cut_offs.write_run(run_dir, counts)}")
+    return 0
+
+
 def main(argv=None):
     """Parse the arguments, run the command; returns the exit status."""
     parser = argparse.ArgumentParser(prog="walkers_stats", description=__doc__.split("\n\n")[0],
@@ -62,6 +85,17 @@ def main(argv=None):
     command = commands.add_parser("authors", help="check a checkout of the authors' repository")
     command.add_argument("checkout", metavar="PATH")
     command.set_defaults(run=run_authors)
+    command = commands.add_parser("experiments", help="the experiments side by side")
+    command.add_argument("root", metavar="ROOT",
+                         help="the committed results (docs/results), each experiment in its folder")
+    command.add_argument("--authors", metavar="PATH",
+                         help="a checkout of the authors' repository: their runs beside ours")
+    command.add_argument("--readme", metavar="FILE",
+                         help="a file whose marked block gets the claims (README.md)")
+    command.set_defaults(run=run_experiments)
+    command = commands.add_parser("cut-offs", help="runs' cut_offs.csv from their evaluations.csv")
+    command.add_argument("run_dirs", metavar="RUN_DIR", nargs="+")
+    command.set_defaults(run=run_cut_offs)
     args = parser.parse_args(argv)
     try:
         return args.run(args)

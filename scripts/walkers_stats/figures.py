@@ -8,9 +8,12 @@ Writes RUN_DIR/figures/<name>.png (200 dpi) and <name>.svg for
   fig6   relative CoG height and CoG velocities (leg lengths, leg lengths/s)
   fig7   body, femur and tibia length per generation of the best biped's run
   fig8   best fitness per generation of every run, coloured by gait class
-  fig9   mean best fitness per case with its bootstrap 95 % band, each replicate faintly,
-         and, given a checkout of the authors' repository, each of their runs as a thin
-         dashed line (without one, a note says why theirs are missing)
+  fig9   one panel per case: our mean best fitness per generation with its bootstrap
+         95 % band, each replicate faintly, and, given a checkout of the authors'
+         repository, each of their runs as a thin dashed line (without one, a note says
+         why theirs are missing)
+  tripods  one panel per case: the share of runs whose best is a tripod, per generation,
+         ours and (given their checkout) the authors' (tripods.py's table)
   finals each run's final best fitness per case, re-scored: the ensemble's median (points
          over a box) and its range (a line); and the share of runs whose final best is a
          tripod, with Wilson 95 % intervals (not in the paper)
@@ -43,8 +46,10 @@ exit status is 1.
 fig9's band is the percentile bootstrap 95 % interval of the mean over the replicates
 (statistics.mean_band, seeded), drawn at up to BAND_POINTS generations; with one
 replicate no band is drawn. Replicates of unequal length are averaged over the
-generations they all have (warning printed). The generation axes of fig8 and fig9 end
-at the generations reproduction.json names.
+generations they all have (warning printed). The generation axes of fig8, fig9 and
+tripods end at the generations reproduction.json names. fig9 and tripods take the
+experiments they show as experiments.series makes them, so that the experiments' page
+(side_by_side.py) draws them with more than one of ours.
 """
 import math
 import os
@@ -60,11 +65,11 @@ from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
 
-from . import load  # noqa: E402
+from . import experiments, load  # noqa: E402
 from .load import POINT_KEYS, InputError  # noqa: E402
 from .statistics import SEED, mean_band, wilson_interval  # noqa: E402
 
-# fig9's bands, told apart where they overlap (by the case's place in the list)
+# fig9's bands, told apart where they overlap (by the experiment's place in the list)
 HATCHES = ("////", "\\\\\\\\", "....", "xxxx", "++++", "oooo")
 GAIT_COLOURS = {"biped": "tab:blue", "tripod": "tab:red"}
 # a generation whose best fell has no gait class (every child fell)
@@ -95,14 +100,10 @@ def load_inputs(run_dir, authors=None):
     """Every input, read and checked (load.py), with the authors' runs (authors.py's
     load_authors, or None) by our case names; raises InputError naming the bad file."""
     rep = load.load_reproduction(run_dir)
-    theirs = {}
-    if authors is not None:
-        theirs = {s["name"]: authors["runs"][s["number"]] for s in rep["scaffolds"]
-                  if s["number"] in authors["runs"]}
     return {"scaffolds": rep["scaffolds"], "runs": rep["primary"],
             "replicates": max([rep["replicates"]] + [r["replicate"] for r in rep["primary"]]),
             "learners": rep["learners"], "learner_runs": rep["runs"],
-            "authors": theirs if authors is not None else None,
+            "series": experiments.series(rep, authors),
             "walks": load.load_walks(run_dir), "gallery": load.load_gallery(run_dir),
             "generations": rep["generations"]}
 
@@ -458,15 +459,14 @@ def fig8(runs, scaffolds, replicates, generations, out_dir):
     save(fig, out_dir, "fig8")
 
 
-def case_curves(case, runs):
-    """(generations, replicates x generations best fitness) of a case, cut to the
-    generations all its replicates have."""
-    n = min(len(r["data"]["best_fitness"]) for r in runs)
-    if any(len(r["data"]["best_fitness"]) != n for r in runs):
+def case_curves(case, curves):
+    """(generations, replicates x generations best fitness) of a case's curves of best
+    fitness, cut to the generations all its replicates have."""
+    n = min(len(c) for c in curves)
+    if any(len(c) != n for c in curves):
         warn(f"fig9: {case} runs have different lengths; using their first {n} "
              "generations")
-    return runs[0]["data"]["generation"][:n], np.stack([r["data"]["best_fitness"][:n]
-                                                        for r in runs])
+    return np.arange(n), np.stack([np.asarray(c[:n], float) for c in curves])
 
 
 def case_label(scaffold):
@@ -477,45 +477,108 @@ def case_label(scaffold):
 AUTHORS_MISSING = "the authors' runs are not shown: no checkout of their repository was named"
 
 
-def fig9(runs, scaffolds, generations, authors, out_dir):
-    """Mean best fitness per generation and case, its bootstrap 95 % band, each
-    replicate's curve faintly, and each of the authors' runs as a thin dashed line
-    (authors: {case: [curves]}, or None: a note says they are missing)."""
-    fig, ax = plt.subplots(figsize=(SINGLE, 3.3), layout="constrained")
-    for index, (scaffold, group) in enumerate(runs_by_case(runs, scaffolds)):
-        colour = scaffold["colour"]
-        for curve in (authors or {}).get(scaffold["name"], []):
-            shown = curve[:generations]
-            ax.plot(np.arange(len(shown)), shown, color=colour, lw=0.6, ls="--", alpha=0.9)
-        if not group:
-            ax.plot([], [], color=colour, label=f"{case_label(scaffold)} (no data)")
-            continue
-        g, y = case_curves(scaffold["name"], group)
-        for curve in y:
-            ax.plot(g, curve, color=colour, lw=0.4, alpha=0.35)
-        ax.plot(g, y.mean(axis=0), color=colour, label=f"{case_label(scaffold)} (n = {len(group)})")
-        at = np.unique(np.linspace(0, len(g) - 1, min(len(g), BAND_POINTS)).round().astype(int))
-        band = mean_band(y[:, at])
-        if band is not None:
-            # outlined and hatched, so that overlapping bands stay apart
-            ax.fill_between(g[at], band[0], band[1], lw=0.6, ls="--",
-                            facecolor=matplotlib.colors.to_rgba(colour, 0.15),
-                            edgecolor=matplotlib.colors.to_rgba(colour, 0.8),
-                            hatch=HATCHES[index % len(HATCHES)])
-    ax.set_xlabel("generation")
-    ax.set_ylabel("best fitness (leg lengths)")
-    ax.set_xlim(0, generations)
-    ax.set_ylim(bottom=0)
-    ax.grid(alpha=0.3, lw=0.5)
-    handles = ax.get_legend_handles_labels()[0]
-    if authors is None:
-        ax.text(0.99, 0.02, AUTHORS_MISSING.replace(": ", ":\n"), transform=ax.transAxes,
-                ha="right", va="bottom", color="0.35")
-    else:
-        handles.append(Line2D([], [], color="0.3", lw=0.6, ls="--", label="the authors' runs"))
-    legend_above(ax, handles=handles,
-                 title="best fitness: mean, bootstrap 95 % band, replicates")
-    save(fig, out_dir, "fig9")
+def case_panels(scaffolds, height):
+    """A figure of one panel per case (sharing the y axis) under a row for the legend:
+    (figure, legend axes, panels)."""
+    fig = plt.figure(figsize=(DOUBLE, height), layout="constrained")
+    grid = fig.add_gridspec(2, len(scaffolds), height_ratios=(0.2, 1.0))
+    panels = []
+    for i, scaffold in enumerate(scaffolds):
+        ax = fig.add_subplot(grid[1, i], sharey=panels[0] if panels else None)
+        ax.set_title(f"Case {scaffold['number']}, {scaffold['label']}", color=scaffold["colour"])
+        ax.set_xlabel("generation")
+        ax.grid(alpha=0.3, lw=0.5)
+        panels.append(ax)
+    key = fig.add_subplot(grid[0, :])      # after the panels: fig.axes[i] is case i + 1's
+    key.axis("off")
+    return fig, key, panels
+
+
+def line_style(experiment):
+    """An experiment's lines: the authors' thin and dashed, ours solid."""
+    if experiment == experiments.AUTHORS:
+        return {"color": experiment.colour, "lw": 0.8, "ls": "--"}
+    return {"color": experiment.colour, "lw": 1.2, "ls": "-"}
+
+
+def runs_count(by_case):
+    """'10 runs a case', or '10/9/10 runs' when the cases differ."""
+    counts = [len(courses) for courses in by_case.values()]
+    return f"{counts[0]} run{'s' if counts[0] != 1 else ''} a case" if len(set(counts)) == 1 \
+        else "/".join(map(str, counts)) + " runs"
+
+
+def finish_case_panels(fig, key, panels, series, scaffolds, generations, what, out_dir, name):
+    """'no data' where no experiment has runs, the generation axes, the legend row (one
+    entry an experiment, and a note when the authors' runs are missing), and save."""
+    for ax, scaffold in zip(panels, scaffolds):
+        if not any(by_case.get(scaffold["name"]) for _, by_case in series):
+            ax.text(0.5, 0.5, "no data", ha="center", va="center", transform=ax.transAxes,
+                    color="0.4")
+        ax.set_xlim(0, generations)
+    handles = [Line2D([], [], **line_style(e), label=f"{e.label} ({runs_count(by_case)})")
+               for e, by_case in series if by_case]
+    if all(e != experiments.AUTHORS for e, _ in series):
+        handles.append(Line2D([], [], ls="", label=AUTHORS_MISSING))
+    key.legend(handles=handles, loc="center", ncol=2 if len(handles) > 1 else 1, title=what,
+               title_fontsize=8, handlelength=2.0, columnspacing=1.5)
+    save(fig, out_dir, name)
+
+
+def fig9(series, scaffolds, generations, out_dir, name="fig9"):
+    """One panel per case: each experiment of ours (series: [(experiment, {case:
+    [course]})], experiments.series) with its mean best fitness per generation, the
+    bootstrap 95 % band of the mean and each replicate's curve faintly; the authors'
+    runs each as a thin dashed line; without them a note says why."""
+    fig, key, panels = case_panels(scaffolds, 3.3)
+    for index, (experiment, by_case) in enumerate(series):
+        colour = experiment.colour
+        for ax, scaffold in zip(panels, scaffolds):
+            courses = by_case.get(scaffold["name"], [])
+            if not courses:
+                continue
+            g, y = case_curves(f"{experiment.id} {scaffold['name']}",
+                               [c["best_fitness"] for c in courses])
+            g, y = g[:generations], y[:, :generations]
+            if experiment == experiments.AUTHORS:
+                for curve in y:
+                    ax.plot(g, curve, **line_style(experiment))
+                continue
+            for curve in y:
+                ax.plot(g, curve, color=colour, lw=0.4, alpha=0.35)
+            ax.plot(g, y.mean(axis=0), **line_style(experiment))
+            at = np.unique(np.linspace(0, len(g) - 1, min(len(g), BAND_POINTS)).round().astype(int))
+            band = mean_band(y[:, at])
+            if band is not None:
+                # outlined and hatched, so that overlapping bands stay apart
+                ax.fill_between(g[at], band[0], band[1], lw=0.6, ls="--",
+                                facecolor=matplotlib.colors.to_rgba(colour, 0.15),
+                                edgecolor=matplotlib.colors.to_rgba(colour, 0.8),
+                                hatch=HATCHES[index % len(HATCHES)])
+    panels[0].set_ylim(bottom=0)
+    panels[0].set_ylabel("best fitness (leg lengths)")
+    finish_case_panels(fig, key, panels, series, scaffolds, generations,
+                       "best fitness: ours as the mean of the runs, its bootstrap 95 % band and "
+                       "each run faintly; the authors' runs dashed", out_dir, name)
+
+
+def tripods_figure(series, scaffolds, generations, out_dir, name="tripods"):
+    """One panel per case: the share of each experiment's runs whose best is a tripod,
+    per generation (series as fig9's); the authors' dashed."""
+    fig, key, panels = case_panels(scaffolds, 2.6)
+    for experiment, by_case in series:
+        for ax, scaffold in zip(panels, scaffolds):
+            courses = by_case.get(scaffold["name"], [])
+            if not courses:
+                continue
+            n = min(min(len(c["best_gait"]) for c in courses), generations)
+            share = np.mean([[gait == "tripod" for gait in c["best_gait"][:n]] for c in courses],
+                            axis=0)
+            ax.step(np.arange(n), share, where="post", **line_style(experiment))
+    panels[0].set_ylim(-0.03, 1.03)
+    panels[0].set_ylabel("runs whose best is a tripod")
+    finish_case_panels(fig, key, panels, series, scaffolds, generations,
+                       "share of the runs whose best is a tripod", out_dir, name)
 
 
 def finals(runs, scaffolds, out_dir):
@@ -618,7 +681,8 @@ def learners_figure(learners, learner_runs, scaffolds, generations, out_dir):
             group = [r for r in learner_runs
                      if r["learner"] == learner["name"] and r["case"] == scaffold["name"]]
             if group:
-                g, y = case_curves(f"{learner['name']} {scaffold['name']}", group)
+                g, y = case_curves(f"{learner['name']} {scaffold['name']}",
+                                   [r["data"]["best_fitness"] for r in group])
                 ax.plot(g, y.mean(axis=0), color=scaffold["colour"])
                 curves_top = max(curves_top, float(y.mean(axis=0).max()))
         ax.set_title(learner["label"])
@@ -674,7 +738,7 @@ def draw_all(inputs, out_dir):
     else:
         drawn("fig5", fig5, gallery, out_dir)
     if not runs:
-        warn("reproduction.json lists no runs: skipping fig7, fig8, fig9, finals")
+        warn("reproduction.json lists no runs: skipping fig7, fig8, fig9, tripods, finals")
         return
     scaffolds = inputs["scaffolds"]
     for scaffold, group in runs_by_case(runs, scaffolds):
@@ -683,7 +747,8 @@ def draw_all(inputs, out_dir):
                  "say 'no data'")
     drawn("fig7", fig7, runs, walks, out_dir)
     drawn("fig8", fig8, runs, scaffolds, inputs["replicates"], inputs["generations"], out_dir)
-    drawn("fig9", fig9, runs, scaffolds, inputs["generations"], inputs["authors"], out_dir)
+    drawn("fig9", fig9, inputs["series"], scaffolds, inputs["generations"], out_dir)
+    drawn("tripods", tripods_figure, inputs["series"], scaffolds, inputs["generations"], out_dir)
     drawn("finals", finals, runs, scaffolds, out_dir)
     if len(inputs["learners"]) > 1:
         drawn("learners", learners_figure, inputs["learners"], inputs["learner_runs"],
@@ -697,8 +762,8 @@ def draw(run_dir, authors=None):
     except InputError as e:
         print(f"error: {e}", file=sys.stderr)
         return 1
-    if inputs["authors"] is None:
-        warn(f"fig9: {AUTHORS_MISSING} (--authors PATH)")
+    if all(e != experiments.AUTHORS for e, _ in inputs["series"]):
+        warn(f"fig9, tripods: {AUTHORS_MISSING} (--authors PATH)")
     out_dir = os.path.join(run_dir, "figures")
     log = os.path.join(out_dir, LOG_NAME)
     try:

@@ -11,6 +11,10 @@ statistics (formats as the `walkers` program writes them).
                                      learner's best biped and best tripod (run, id)
   RUN_DIR/<run dir>/generations.csv  required for every run: best fitness, gait, falls and
                                      evaluation rate per generation
+  RUN_DIR/<run dir>/evaluations.csv  read only under a cut-off (program.evaluation.cut_off_rhs):
+    or cut_offs.csv                  the children cut off (CUT_OFF_FITNESS) per generation;
+                                     cut_offs.csv keeps them where evaluations.csv is not
+                                     kept (cut_offs.py); a run with neither has none recorded
   RUN_DIR/walks.json                 optional: the best biped's and best tripod's walks
   RUN_DIR/gallery.json               optional: every run's final best standing
 
@@ -35,6 +39,11 @@ POINT_KEYS = ("hip", "knee_l", "ankle_l", "knee_r", "ankle_r")
 FRAME_KEYS = ("t", "trunk", "hip", "knee_l", "ankle_l", "foot_l", "knee_r", "ankle_r",
               "foot_r", "distance", "com", "com_velocity")
 MANIFEST = "reproduction.json"
+CUT_OFF_FITNESS = -124.0     # an evaluation cut off: the authors' past 25 s of wall clock, ours
+                             # past a budget of right-hand sides (control/evaluation.h)
+CUT_OFFS_FILE = "cut_offs.csv"
+CUT_OFFS_COLUMNS = ("generation", "cut_offs")
+INTEGRATORS = ("cvode", "rk-merson")   # program.evaluation.integrator; files without it are CVODE's
 
 
 class InputError(Exception):
@@ -181,6 +190,53 @@ def load_generations(path):
     return data
 
 
+def count_cut_offs(path, generations):
+    """evaluations.csv -> the children per generation whose fitness is CUT_OFF_FITNESS.
+    The generation and fitness come before the one quoted column (failure), so each
+    line is split only up to them."""
+    with open(path, encoding="utf-8") as f:
+        header = f.readline().rstrip("\n").split(",")
+        if "generation" not in header or "fitness" not in header:
+            raise InputError(f"{path}: header lacks column(s) generation, fitness")
+        g_at, f_at = header.index("generation"), header.index("fitness")
+        counts = np.zeros(generations, dtype=int)
+        for line_number, line in enumerate(f, 2):
+            cells = line.split(",", max(g_at, f_at) + 1)
+            try:
+                g, fitness = int(cells[g_at]), float(cells[f_at])
+            except (IndexError, ValueError):
+                raise InputError(f"{path}: line {line_number}: no generation and fitness") from None
+            if not 0 <= g < generations:
+                raise InputError(f"{path}: line {line_number}, column generation: {g} is outside "
+                                 f"[0, {generations - 1}]")
+            counts[g] += fitness == CUT_OFF_FITNESS
+    return counts
+
+
+def load_cut_offs(run_dir, generations):
+    """A run's cut-offs per generation (an array of `generations` counts): from its
+    evaluations.csv, else its cut_offs.csv; None when it has neither."""
+    evaluations = os.path.join(run_dir, "evaluations.csv")
+    if os.path.isfile(evaluations):
+        return count_cut_offs(evaluations, generations)
+    path = os.path.join(run_dir, CUT_OFFS_FILE)
+    if not os.path.isfile(path):
+        return None
+    with open(path, newline="", encoding="utf-8") as f:
+        reader = csv.reader(f)
+        if tuple(next(reader, ())) != CUT_OFFS_COLUMNS:
+            raise InputError(f"{path}: the header is not {','.join(CUT_OFFS_COLUMNS)}")
+        counts = []
+        for row in reader:
+            if len(row) != 2 or row[0] != str(len(counts)) or not row[1].isdigit():
+                raise InputError(f"{path}: line {reader.line_num}: '{','.join(row)}' is not "
+                                 f"generation {len(counts)} and a count")
+            counts.append(int(row[1]))
+    if len(counts) != generations:
+        raise InputError(f"{path}: {len(counts)} generations, its generations.csv {generations}")
+    return np.array(counts)
+
+
 def load_run(run_dir, run, path, where, scaffolds, learners, size):
     """One run of reproduction.json with its generations.csv."""
     entry = {"learner": one_of(run, "learner", path, where, [l["name"] for l in learners]),
@@ -235,11 +291,19 @@ def load_reproduction(run_dir):
     program = field(manifest, "program", path, "", dict)
     rep["program"] = {"commit": field(program, "commit", path, "program.", str),
                       "evaluation": field(program, "evaluation", path, "program.", dict)}
+    evaluation = rep["program"]["evaluation"]
+    rep["integrator"] = one_of(evaluation, "integrator", path, "program.evaluation.",
+                               INTEGRATORS) if "integrator" in evaluation else "cvode"
+    rep["cut_off_rhs"] = count(evaluation, "cut_off_rhs", path, "program.evaluation.", 0,
+                               2 ** 62) if "cut_off_rhs" in evaluation else 0
     rep["scaffolds"] = named_list(manifest, "scaffolds", path, (("paper_tripod_finals", 0, 3),))
     rep["learners"] = named_list(manifest, "learners", path)
     rep["runs"] = [load_run(run_dir, run, path, f"runs[{i}].", rep["scaffolds"], rep["learners"],
                             rep["ensemble"])
                    for i, run in enumerate(field(manifest, "runs", path, "", list))]
+    for r in rep["runs"]:
+        r["cut_offs"] = load_cut_offs(os.path.join(run_dir, r["dir"]),
+                                      len(r["data"]["generation"])) if rep["cut_off_rhs"] else None
     rep["primary"] = [r for r in rep["runs"] if r["learner"] == rep["learners"][0]["name"]]
     for key in ("best_biped", "best_tripod"):
         rep[key] = load_pick(manifest, key, path, rep["primary"])

@@ -4,7 +4,9 @@ files load.py reads (and, when named, the authors' runs: authors.py).
   summary.json  the configuration; the first learner's runs with their finals, re-scores,
                 evaluations, falls and evaluation time; the best biped and best tripod;
                 the rates; "beside_authors" (authors.compare); "claims" (claims.evaluate,
-                with a block per learner when there are two or more)
+                with a block per learner when there are two or more); "tripods"
+                (tripods.compare) and "cut_offs" (cut_offs.compare), the authors' beside
+                ours
   summary.md    the same as tables and lines a person reads
 
 Both are written through temporary files renamed into place, and only once both texts
@@ -17,11 +19,10 @@ import os
 import numpy as np
 
 from . import authors as the_authors
-from . import claims
-from . import paper
-from .text import finite_or_null, fmt_interval, fmt_percent
+from . import claims, cut_offs, experiments, paper, tripods
+from .text import finite_or_null, fmt_interval, fmt_percent, write_atomically
 
-FIGURES = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals")
+FIGURES = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "tripods", "finals")
 FINALISTS = ("final_best", "best_biped", "best_tripod")
 
 
@@ -64,6 +65,8 @@ def summarize(rep, authors):
         "rescores": {"ensemble": rep["ensemble"], "not_reproduced": not_reproduced(rep["runs"])},
         "beside_authors": the_authors.compare(rep, authors, share.get("effect", {}).get("value")),
         "claims": block,
+        "tripods": tripods.compare(experiments.series(rep, authors), rep["scaffolds"]),
+        "cut_offs": cut_offs.compare([rep], authors),
     }
     return finite_or_null(summary)
 
@@ -171,23 +174,13 @@ def markdown(summary, rep):
               "(`program.evaluation`) and in each run's `config.json`.")
     parts = [title + "\n", intro + "\n", beside_authors_markdown(summary["beside_authors"],
                                                                  rep["scaffolds"]),
-             claims.markdown(summary["claims"]), bests_markdown(summary)]
+             claims.markdown(summary["claims"]),
+             tripods.markdown(summary["tripods"], rep["scaffolds"]),
+             cut_offs.markdown(summary["cut_offs"], rep["scaffolds"]), bests_markdown(summary)]
     if len(rep["learners"]) > 1:
         parts.append(learners_markdown(summary["claims"], rep["learners"], rep["scaffolds"]))
     parts.append("## Figures\n\n" + "".join(f"![{fig}](figures/{fig}.png)\n" for fig in FIGURES))
     return "\n".join(parts)
-
-
-def write_atomically(path, text):
-    """Write text to path through a temporary file renamed into place."""
-    temporary = f"{path}.tmp.{os.getpid()}"
-    try:
-        with open(temporary, "w", encoding="utf-8") as f:
-            f.write(text)
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.remove(temporary)
 
 
 def write(run_dir, summary, rep):

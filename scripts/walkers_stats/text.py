@@ -1,5 +1,7 @@
-"""Numbers as the summary's lines and tables print them, and as its JSON holds them."""
+"""Numbers as the summary's lines and tables print them, and as its JSON holds them; text
+written to a file atomically."""
 import math
+import os
 
 
 def fmt_p(p):
@@ -45,3 +47,15 @@ def finite_or_null(obj):
 def json_interval(interval):
     """An interval as a JSON list, or null."""
     return None if interval is None else [float(v) for v in interval]
+
+
+def write_atomically(path, text):
+    """Write text to path through a temporary file renamed into place."""
+    temporary = f"{path}.tmp.{os.getpid()}"
+    try:
+        with open(temporary, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)

@@ -168,12 +168,22 @@ grep -q "the statistics failed (exit status 3)" <<<"$out" || fail "no message fo
 [ -s "$tmp/rep/figures/fig9.png" ] || fail "the figures were not drawn after the summary failed"
 
 # the authors' runs beside ours, from a checkout named (a stand-in: their
-# fitness-data format, three runs a case); a folder without them is refused
-# before any run starts
+# fitness-data, bump-data and summarisedOutput formats, three runs a case); a
+# folder without them is refused before any run starts
 data="$tmp/authors/CaseData/image/fitness-data"
-mkdir -p "$data"
+labels="$tmp/authors/CaseData/image/bump-data"
+mkdir -p "$data" "$labels"
 for c in 1 2 3; do
-  for m in 1 2 3; do printf '0,\n%d\ncount: 2\n1.5,\n%d.25\ncount: 2\n' "$m" "$((c + m))" >"$data/case$c-$m.txt"; done
+  mkdir -p "$tmp/authors/CaseData/case$c"
+  for m in 1 2 3; do
+    printf '0,\n%d\ncount: 2\n1.5,\n%d.25\ncount: 2\n' "$m" "$((c + m))" >"$data/case$c-$m.txt"
+    printf 'bump 1 >>> tripod\ncurrentGen:\n0_0\nmaxFitness:\n1.5\n\nbump 2 >>> biped\ncurrentGen:\n%d_3\nmaxFitness:\n%d.25\n\ncount: 2\n' \
+      "$m" "$((c + m))" >"$labels/c${c}_$m.txt"
+    "$python" -c 'import sys
+with open(sys.argv[1], "w") as f:
+    for g in range(4000):
+        f.write(f"Generation: {g}\nCurrent Fitness:\n[1.5, -124, 2.0]\n\n")' "$tmp/authors/CaseData/case$c/summarisedOutput-$m"
+  done
 done
 WALKERS_PYTHON=$python "$walkers" reproduce --generations 3 --replicates 1 --ensemble 3 --out "$tmp/rep" --resume \
   --authors-checkout "$tmp/authors" >"$tmp/authors.txt" 2>&1 || { cat "$tmp/authors.txt"; fail "reproduce --authors-checkout failed"; }
@@ -188,6 +198,12 @@ assert b["checkout"] == sys.argv[2] and b["note"] is None, b
 row = next(r for r in b["at_generations"] if r["case"] == "free" and r["generation"] == 2)
 assert row["authors"] == {"mean": (2.25 + 3.25 + 1.5) / 3, "runs": 3}, row
 assert row["ours"]["runs"] == 1
+# their labels and their children: where the tripods go, the cut-offs (one of three a generation)
+assert [e["experiment"] for e in s["tripods"]["experiments"]] == ["authors", "cvode"], s["tripods"]
+free = s["tripods"]["experiments"][0]["cases"]["free"]
+assert free["biped_for_good"]["runs"] == [1, 2, 3], free
+whole = s["cut_offs"]["experiments"][0]["cases"]["free"]["blocks"][-1]
+assert whole == {"first": 0, "last": 3999, "cut_offs": 12000, "evaluations": 36000}, whole
 PY
 grep -q "the authors" "$tmp/rep/figures/fig9.svg" || fail "fig9 does not show the authors' runs"
 out=$("$walkers" reproduce --generations 3 --replicates 1 --out "$tmp/new" --authors-checkout "$tmp/rep" 2>&1) &&

@@ -26,20 +26,25 @@ THEIRS = {1: [[(0, 10.0)], [(0, 12.0)], [(0, 14.0)]],
           3: [[(0, 4.0), (0, 5.0), (2000, 20.0)]] * 3}
 
 
-class ReadRunTest(unittest.TestCase):
-    """One run's file: the best fitness of every generation, or an error naming the line."""
+class OneFileTest(unittest.TestCase):
+    """A test of one of their files, FILE in a folder of its own."""
+    FILE = "case1-1.txt"
 
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
-        self.path = os.path.join(self.tmp.name, "case1-1.txt")
+        self.path = os.path.join(self.tmp.name, self.FILE)
 
     def tearDown(self):
         self.tmp.cleanup()
 
     def write(self, text):
-        """The run file's text."""
+        """The file's text."""
         with open(self.path, "w", encoding="utf-8") as f:
             f.write(text)
+
+
+class ReadRunTest(OneFileTest):
+    """One run's file: the best fitness of every generation, or an error naming the line."""
 
     def test_each_improvement_holds_from_its_generation_on(self):
         fixtures.write_authors_run(self.path, [(0, 1.0), (0, 2.0), (5, 3.0), (100, 4.5)])
@@ -72,6 +77,92 @@ class ReadRunTest(unittest.TestCase):
             self.assertEqual(str(raised.exception), f"{self.path}: {message}")
 
 
+class LabelsTest(OneFileTest):
+    """Their gait labels (bump-data) in each of their three layouts, matched to the runs
+    by their improvements; every child's fitness (summarisedOutput) and its cut-offs."""
+    FILE = "c1_1.txt"
+
+    # the same three improvements in each layout (stand-in numbers, not theirs)
+    LAYOUTS = {
+        "bump, then generation_child and fitness on lines of their own":
+            "$ their script run_x\nbump 1 >>> tripod\ncurrentGen:\n0_0\nmaxFitness:\n4.5\n\n"
+            "bump 2 >>> bipedal-tripod\ncurrentGen: \n7_3\nmaxFitness:\n5.25\nwalkerVis.o 0.1 0.2\n\n"
+            "bump 3 >>> biped\ncurrentGen: 31_12\nmaxFitness:\n6.0\n\ncount: 3\n\n2400\n>>>\n",
+        "generation and child, then bump and fitness":
+            "$ their script run_x\ncurrentGen: 0\ncurrentNum: 0\nbump 1 >>> tripod\n4.5 \n\n"
+            "currentGen: 7\ncurrentNum: 3\nbump 2 >>>bipedal-tripod\n5.25 \nwalkerVis.o 0.1\n\n"
+            "currentGen: 31\ncurrentNum: 12\nbump 3 >>> biped\n6.0 \n\ncount: 3\n",
+        "generation and child, then >kG fitness":
+            "$ their script run_x\ncurrentGen: 0\ncurrentNum: 0\n>1T 4.5\n\ncurrentGen: 7\n"
+            "currentNum: 3\n>2TB 5.25\nwalkerVis.o 0.1\n\ncurrentGen: 31\ncurrentNum: 12\n>3B 6.0\n"
+            "count: 3\nadd data\ncurrentGen: 40\n>4B 9.0\n",
+    }
+
+    def test_each_layout_gives_the_same_bumps(self):
+        for layout, text in self.LAYOUTS.items():
+            self.write(text)
+            # a bipedal-tripod counts as a tripod
+            self.assertEqual(authors.read_labels(self.path),
+                             [(0, 4.5, "tripod"), (7, 5.25, "tripod"), (31, 6.0, "biped")], layout)
+
+    def test_malformed_labels_are_named(self):
+        good = self.LAYOUTS["bump, then generation_child and fitness on lines of their own"]
+        cases = [
+            (good.replace("bump 2 >>> bipedal-tripod", "bump 2 >>> quadruped"),
+             "line 8: 'bump 2 >>> quadruped' is not bump 2 with a gait of biped, B, tripod, T, "
+             "bipedal-tripod, TB"),
+            (good.replace("bump 3 >>> biped", "bump 4 >>> biped"),
+             "line 15: 'bump 4 >>> biped' is not bump 3 with a gait of"),
+            (good.replace("count: 3", "count: 4"), "line 20 says 4 bumps, the lines above hold 3 whole ones"),
+            (good.replace("\n7_3\n", "\nseven\n"), "line 10: 'seven' is not a generation G_C"),
+            (good.replace("5.25", "fast"), "line 12: 'fast' is not a fitness"),
+            (good.replace("count: 3", "three"), "no 'count: K' line"),
+        ]
+        for text, message in cases:
+            self.write(text)
+            with self.assertRaises(load.InputError) as raised:
+                authors.read_labels(self.path)
+            self.assertTrue(str(raised.exception).startswith(f"{self.path}: {message}"),
+                            str(raised.exception))
+
+    def test_a_runs_labels_are_the_file_with_its_improvements(self):
+        fitness = os.path.join(self.tmp.name, "case1-1.txt")
+        fixtures.write_authors_run(fitness, [(0, 4.5), (7, 5.25), (31, 6.0)])
+        other = [(0, 4.5), (9, 7.0)]
+        labels = {"c1_1.txt": [(g, f, "biped") for g, f in other],
+                  "c1_2.txt": [(0, 4.5, "tripod"), (7, 5.25, "tripod"), (31, 6.0, "biped")]}
+        gaits = authors.run_gaits(fitness, labels)
+        self.assertEqual(len(gaits), paper.GENERATIONS)
+        self.assertEqual([gaits[g] for g in (0, 6, 7, 30, 31, paper.GENERATIONS - 1)],
+                         ["tripod"] * 4 + ["biped"] * 2)
+        with self.assertRaises(load.InputError) as raised:
+            authors.run_gaits(fitness, {"c1_1.txt": labels["c1_1.txt"]})
+        self.assertEqual(str(raised.exception), f"{fitness}: 0 differently labelled files of "
+                         "c1_1.txt have its improvements as their bumps (generation, fitness), not one")
+
+    def test_children_cut_off_per_generation(self):
+        path = os.path.join(self.tmp.name, "summarisedOutput-01")
+        fixtures.write_authors_children(path, {0: 2, 3999: 16, 17: 1})
+        cut_offs, evaluations = authors.read_children(path)
+        self.assertEqual(len(cut_offs), paper.GENERATIONS)
+        self.assertEqual((cut_offs[0], cut_offs[17], cut_offs[3999], cut_offs.sum()), (2, 1, 16, 19))
+        self.assertTrue(np.all(evaluations == fixtures.POPULATION))
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        for bad, message in ((text.replace("Generation: 5\n", "Generation: 6\n", 1),
+                              "line 36: 'Generation: 6' is not generation 5 followed by "
+                              "'Current Fitness:'"),
+                             (text.replace("[1.5, 1.5", "[1.5, far", 1),
+                              "line 10: '[1.5, far, 1.5"),
+                             (text[:text.index("Generation: 3999")], "3999 generations, not 4000")):
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(bad)
+            with self.assertRaises(load.InputError) as raised:
+                authors.read_children(path)
+            self.assertTrue(str(raised.exception).startswith(f"{path}: {message}"),
+                            str(raised.exception))
+
+
 class LoadAuthorsTest(unittest.TestCase):
     """A checkout: its runs by case and run number, or an error naming it."""
 
@@ -93,6 +184,30 @@ class LoadAuthorsTest(unittest.TestCase):
                          "9 runs of the authors: case 1: 3, case 2: 3, case 3: 3")
         status, out, err = run_statistics("authors", checkout)
         self.assertEqual((status, out.strip()), (0, "9 runs of the authors: case 1: 3, case 2: 3, case 3: 3"), err)
+
+    def test_the_labels_and_the_children_come_with_the_runs(self):
+        gaits = {2: [["tripod", "biped"], ["tripod", "tripod"], ["biped", "tripod"]]}
+        checkout = fixtures.authors_checkout(
+            self.tmp.name, {2: [[(0, 1.0), (10, 2.0)], [(0, 1.0), (20, 3.0)], [(0, 1.0), (30, 4.0)]]},
+            gaits=gaits, cut_offs={2: [{}, {5: 3}, {}]})
+        found = authors.load_authors(checkout)
+        # the labels' files are numbered the other way round: matched by their bumps
+        self.assertEqual([[run[g] for g in (0, 9, 10, 25, 30)] for run in found["gaits"][2]],
+                         [["tripod", "tripod", "biped", "biped", "biped"],
+                          ["tripod"] * 5, ["biped", "biped", "biped", "biped", "tripod"]])
+        self.assertEqual([int(c.sum()) for c, _ in found["children"][2]], [0, 3, 0])
+        # a run without its labels, or a case without every run's children, is named
+        os.remove(os.path.join(checkout, authors.BUMP_DATA, "c2_2.txt"))
+        with self.assertRaises(load.InputError) as raised:
+            authors.load_authors(checkout)
+        self.assertIn("case2-2.txt: 0 differently labelled files of", str(raised.exception))
+        fixtures.write_authors_labels(os.path.join(checkout, authors.BUMP_DATA, "c2_2.txt"),
+                                      [(0, 1.0), (20, 3.0)], ["tripod", "tripod"])
+        os.remove(os.path.join(checkout, "CaseData", "case2", "summarisedOutput-03"))
+        with self.assertRaises(load.InputError) as raised:
+            authors.load_authors(checkout)
+        self.assertIn("summarisedOutput-*: 2 files, not one for each of case 2's 3 runs",
+                      str(raised.exception))
 
     def test_a_folder_without_their_runs_is_named(self):
         with self.assertRaises(load.InputError) as raised:
@@ -176,30 +291,32 @@ class BesideOursTest(unittest.TestCase):
 
     def test_fig9_draws_their_runs_as_thin_dashed_lines(self):
         def fig9(theirs):
-            """Fig. 9 as drawn, with the authors' runs `theirs` (or None)."""
+            """Fig. 9 as drawn, with the authors' runs `theirs` (or None): its panels, one
+            a case, and its legend row."""
             drawn = {}
             inputs = figures.load_inputs(self.rep, theirs)
             with mock.patch.object(figures, "save", lambda fig, out, name: drawn.__setitem__(name, fig)), \
                     figures.plt.rc_context(figures.STYLE):
-                figures.fig9(inputs["runs"], inputs["scaffolds"], inputs["generations"],
-                             inputs["authors"], None)
-            return drawn["fig9"].axes[0]
+                figures.fig9(inputs["series"], inputs["scaffolds"], inputs["generations"], None)
+            return drawn["fig9"].axes[:3], drawn["fig9"].axes[3]
 
-        ax = fig9(authors.load_authors(self.checkout))
-        dashed = [l for l in ax.get_lines() if l.get_linestyle() == "--"]
-        self.assertEqual(len(dashed), 9)
-        for line in dashed:
-            self.assertLess(line.get_linewidth(), 1.0)
-            self.assertEqual(len(line.get_xdata()), 20)      # cut to our generations
-        case3 = [l for l in dashed if l.get_color() == fixtures.SCAFFOLDS[2]["colour"]]
-        self.assertEqual([list(l.get_ydata()[:1]) for l in case3], [[5.0]] * 3)
-        labels = [t.get_text() for t in ax.get_legend().get_texts()]
-        self.assertIn("the authors' runs", labels)
-        self.assertEqual(len(ax.texts), 0)
-        # without a checkout: no lines of theirs, and a note says why
-        ax = fig9(None)
-        self.assertEqual([l for l in ax.get_lines() if l.get_linestyle() == "--"], [])
-        self.assertIn("no checkout", " ".join(t.get_text() for t in ax.texts))
+        panels, key = fig9(authors.load_authors(self.checkout))
+        for panel, scaffold in zip(panels, fixtures.SCAFFOLDS):
+            dashed = [l for l in panel.get_lines() if l.get_linestyle() == "--"]
+            self.assertEqual(len(dashed), 3, scaffold["name"])     # their three runs of the case
+            for line in dashed:
+                self.assertLess(line.get_linewidth(), 1.0)
+                self.assertEqual(len(line.get_xdata()), 20)      # cut to our generations
+            self.assertIn(scaffold["label"], panel.get_title())
+        self.assertEqual([list(l.get_ydata()[:1]) for l in panels[2].get_lines()
+                          if l.get_linestyle() == "--"], [[5.0]] * 3)
+        labels = [t.get_text() for t in key.get_legend().get_texts()]
+        self.assertIn("the authors' runs (3 runs a case)", labels)
+        self.assertIn("ours on CVODE (4 runs a case)", labels)
+        # without a checkout: no lines of theirs, and the legend says why
+        panels, key = fig9(None)
+        self.assertEqual([l for p in panels for l in p.get_lines() if l.get_linestyle() == "--"], [])
+        self.assertIn("no checkout", " ".join(t.get_text() for t in key.get_legend().get_texts()))
         figures.plt.close("all")
 
 

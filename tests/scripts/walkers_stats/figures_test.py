@@ -26,7 +26,7 @@ import fixtures  # noqa: E402
 from fixtures import CASES, edit_json  # noqa: E402
 from walkers_stats import figures, load, statistics  # noqa: E402
 
-ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "finals")
+ALL = ("fig4a", "fig4b", "fig5", "fig6", "fig7", "fig8", "fig9", "tripods", "finals")
 WALK_FIGS = ("fig4a", "fig4b", "fig6")
 REPLICATES, GENERATIONS = 2, 60
 
@@ -101,10 +101,11 @@ class FiguresTest(unittest.TestCase):
 
     def test_all_figures_written(self):
         stderr = self.run_script()
-        # no warning but that the authors' runs are missing, which fig9 says too
+        # no warning but that the authors' runs are missing, which fig9 and tripods say too
         self.assertEqual([l for l in stderr.splitlines() if "warning" in l],
-                         [f"warning: fig9: {figures.AUTHORS_MISSING} (--authors PATH)"])
+                         [f"warning: fig9, tripods: {figures.AUTHORS_MISSING} (--authors PATH)"])
         self.assertIn("the authors", self.svg_text("fig9"))
+        self.assertIn("the authors", self.svg_text("tripods"))
         for name in ALL:
             self.assert_figure(name)
         self.assertIn("performance-2", self.svg_text("fig7"))   # the best biped's run
@@ -137,7 +138,9 @@ class FiguresTest(unittest.TestCase):
         for name in ALL:
             self.assert_figure(name)
         self.assertIn("no data", self.svg_text("fig8"))
-        self.assertIn("Case 2 time-constrained (no data)", self.svg_text("fig9"))
+        for name in ("fig9", "tripods"):
+            self.assertIn("Case 2, time-constrained", self.svg_text(name))
+            self.assertIn("<!-- no data -->", self.svg_text(name))
 
     def test_null_tripod_skips_only_tripod_parts(self):
         edit_json(os.path.join(self.run_dir, "walks.json"),
@@ -170,7 +173,9 @@ class FiguresTest(unittest.TestCase):
         edit_json(os.path.join(self.run_dir, "reproduction.json"), add_case)
         self.run_script()
         self.assertIn("Case 4 (steps), replicate 1", self.svg_text("fig8"))
-        self.assertIn("Case 4 stepwise (n = 1)", self.svg_text("fig9"))
+        for name in ("fig9", "tripods"):
+            self.assertIn("Case 4, stepwise", self.svg_text(name))
+            self.assertIn("ours on CVODE (2/2/2/1 runs)", self.svg_text(name))
 
     def test_a_reproduction_without_its_scaffolds_is_an_error(self):
         for change, message in ((lambda s: s.pop("scaffolds"), "missing field 'scaffolds'"),
@@ -248,7 +253,8 @@ class FiguresTest(unittest.TestCase):
                   "        f.write(b'half a figure')\n"
                   "    raise OSError(errno.ENOSPC, 'No space left on device')\n"
                   "matplotlib.figure.Figure.savefig = full\n"
-                  f"sys.exit(figures.draw({self.run_dir!r}, {{'checkout': '.', 'runs': {{}}}}))\n")
+                  f"sys.exit(figures.draw({self.run_dir!r}, {{'checkout': '.', 'runs': {{}}, "
+                  "'gaits': {}, 'children': {}}))\n")
         proc = subprocess.run([sys.executable, "-c", driver], text=True, capture_output=True,
                               timeout=300)
         self.assertEqual(proc.returncode, 1, proc.stderr)
@@ -289,7 +295,7 @@ class DrawnFiguresTest(unittest.TestCase):
 
     def test_generation_axes_end_at_the_reproductions_generations(self):
         figs = self.figs
-        for name in ("fig8", "fig9"):
+        for name in ("fig8", "fig9", "tripods"):
             ax = figs[name].axes[0]
             self.assertEqual(ax.get_xlim(), (0.0, GENERATIONS), name)
             self.assertIn(GENERATIONS, list(ax.get_xticks()), name)   # a tick at the end
@@ -305,34 +311,46 @@ class DrawnFiguresTest(unittest.TestCase):
         self.assertGreaterEqual(max(face[3], edge[3] if swatch.get_linewidth() > 0 else 0), 0.5,
                                 f"face {face}, edge {edge}")
 
-    def test_fig9_bands_are_outlined_and_hatched_apart(self):
-        bands = self.figs["fig9"].axes[0].collections
-        self.assertEqual(len(bands), len(CASES))
-        hatches = [b.get_hatch() for b in bands]
-        self.assertTrue(all(hatches), hatches)
-        self.assertEqual(len(set(hatches)), len(CASES), hatches)
-        for band in bands:
-            self.assertGreater(band.get_linewidths()[0], 0)
-            self.assertGreaterEqual(band.get_edgecolor()[0][3], 0.5)
+    def test_fig9_has_a_panel_a_case_and_its_band_outlined_and_hatched(self):
+        panels = self.figs["fig9"].axes[:len(CASES)]
+        for number, (panel, scaffold) in enumerate(zip(panels, fixtures.SCAFFOLDS), 1):
+            self.assertEqual(panel.get_title(), f"Case {number}, {scaffold['label']}")
+            self.assertEqual(panel.get_xlim(), (0.0, GENERATIONS))
+            bands = panel.collections
+            self.assertEqual(len(bands), 1)              # one experiment of ours
+            self.assertTrue(bands[0].get_hatch())
+            self.assertGreater(bands[0].get_linewidths()[0], 0)
+            self.assertGreaterEqual(bands[0].get_edgecolor()[0][3], 0.5)
+        self.assertEqual(len(self.figs["fig9"].axes), len(CASES) + 1)    # and the legend's row
 
     def test_fig9_band_is_the_bootstrap_interval_of_the_mean(self):
-        ax = self.figs["fig9"].axes[0]
-        lines = [l for l in ax.get_lines() if len(l.get_xdata())]
-        faint = [l for l in lines if l.get_alpha() is not None and l.get_alpha() < 0.5]
-        means = [l for l in lines if l.get_alpha() is None]
-        self.assertEqual(len(faint), len(CASES) * REPLICATES)     # every replicate, faintly
-        self.assertEqual(len(means), len(CASES))
-        for case, band, mean in zip(CASES, ax.collections, means):
-            curves = np.array([l.get_ydata() for l in faint
-                               if l.get_color() == mean.get_color()])
-            np.testing.assert_allclose(mean.get_ydata(), curves.mean(axis=0))
+        for case, panel in zip(CASES, self.figs["fig9"].axes):
+            lines = [l for l in panel.get_lines() if len(l.get_xdata())]
+            faint = [l for l in lines if l.get_alpha() is not None and l.get_alpha() < 0.5]
+            means = [l for l in lines if l.get_alpha() is None]
+            self.assertEqual(len(faint), REPLICATES, case)       # every replicate, faintly
+            self.assertEqual(len(means), 1, case)
+            curves = np.array([l.get_ydata() for l in faint])
+            np.testing.assert_allclose(means[0].get_ydata(), curves.mean(axis=0))
             low, high = statistics.mean_band(curves)
-            edge = band.get_paths()[0].vertices[:, 1]
+            edge = panel.collections[0].get_paths()[0].vertices[:, 1]
             # the band's outline runs along both limits
             self.assertTrue(np.isin(np.round(low, 9), np.round(edge, 9)).all(), case)
             self.assertTrue(np.isin(np.round(high, 9), np.round(edge, 9)).all(), case)
             self.assertTrue(np.all(low <= curves.mean(axis=0) + 1e-12), case)
             self.assertTrue(np.any(high - low > 0), case)
+
+    def test_tripods_draws_the_share_of_tripod_bests_per_generation(self):
+        # fixtures.evolving_runs: replicate r of the case in place c is a tripod until
+        # generation 15 (c + r): case 1's two runs until 15 and 30
+        panels = self.figs["tripods"].axes[:len(CASES)]
+        for c, panel in enumerate(panels):
+            (line,) = panel.get_lines()
+            share = line.get_ydata()
+            self.assertEqual(len(share), GENERATIONS)
+            until = [15 * (c + r) for r in range(1, REPLICATES + 1)]
+            expected = [sum(g < u for u in until) / REPLICATES for g in range(GENERATIONS)]
+            np.testing.assert_allclose(share, expected)
 
     def test_finals_shows_every_re_scored_final_best_and_the_tripod_shares(self):
         left, right = self.figs["finals"].axes

@@ -1,7 +1,7 @@
 """Synthetic inputs of the statistics package, written as the `walkers` program writes
 them: a reproduction folder (reproduction.json, every run's generations.csv, walks.json,
 gallery.json) and a stand-in for a checkout of the authors' repository (their
-fitness-data files). Nothing here comes from real runs."""
+fitness-data, bump-data and summarisedOutput files). Nothing here comes from real runs."""
 import csv
 import json
 import math
@@ -82,19 +82,46 @@ def finalist(ident, fitness, gait, median=None, size=1):
 
 
 def run(case, replicate, fitness, gaits, best_biped=None, best_tripod=None, medians=None,
-        learner="ga", half_body_x=None):
+        learner="ga", half_body_x=None, cut_offs=None):
     """One run: its curve and gaits per generation, its best biped's and best tripod's
-    recorded fitness (None: none), and the re-scored medians of its finals
-    (medians: {"final_best"|"best_biped"|"best_tripod": median}, else the recorded)."""
+    recorded fitness (None: none), the re-scored medians of its finals
+    (medians: {"final_best"|"best_biped"|"best_tripod": median}, else the recorded), and
+    with cut_offs ({generation: children cut off}) an evaluations.csv."""
     return {"learner": learner, "case": case, "replicate": replicate,
             "fitness": np.asarray(fitness, float), "gaits": list(gaits), "best_biped": best_biped,
-            "best_tripod": best_tripod, "medians": medians or {}, "half_body_x": half_body_x}
+            "best_tripod": best_tripod, "medians": medians or {}, "half_body_x": half_body_x,
+            "cut_offs": cut_offs}
+
+
+# a reproduction.json's program.evaluation under the authors' integrator and cut-off
+RK_MERSON = {"relative_tolerance": 1e-7, "integrator": "rk-merson", "accuracy": 0.05,
+             "constraint_tolerance": 0.01, "cut_off_rhs": 128000}
+
+
+def write_evaluations(path, generations, cut_offs, population=POPULATION):
+    """An evaluations.csv of `generations` x `population` children, cut_offs[g] of
+    generation g's scoring -124; a child of each generation failed with a reason that
+    holds commas."""
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["generation", "child", "parents", "halfBodyX", "fitness", "distance", "fell",
+                    "gait", "footsteps", "trunk_contact_fraction", "cvode_steps", "failure",
+                    "wall_ms"])
+        for g in range(generations):
+            k = cut_offs.get(g, 0)
+            for c in range(population):
+                cut = c < k
+                failed = c == population - 1 and not cut
+                w.writerow([g, c, "" if g == 0 else f"{g - 1}/0", 0.5, -124 if cut else -1 if failed
+                            else 2.5, 1.0, 0, "none" if cut or failed else "biped", 3, 0.0, 500,
+                            "the step size fell, at t=7.9, to 0" if failed else "", 1.5])
 
 
 def write_reproduction(root, runs, generations=None, learners=("ga",), ensemble=1,
-                       scaffolds=SCAFFOLDS, walks=None, gallery=None):
-    """A reproduction folder ROOT/rep of `runs` (run()'s); returns its path."""
-    rep = os.path.join(root, "rep")
+                       scaffolds=SCAFFOLDS, walks=None, gallery=None, evaluation=None, folder="rep"):
+    """A reproduction folder ROOT/FOLDER of `runs` (run()'s), made under `evaluation`
+    (program.evaluation; CVODE's by default); returns its path."""
+    rep = os.path.join(root, folder)
     os.makedirs(rep)
     listed = []
     for r in runs:
@@ -103,6 +130,12 @@ def write_reproduction(root, runs, generations=None, learners=("ga",), ensemble=
         os.makedirs(os.path.join(rep, name))
         write_generations(os.path.join(rep, name, "generations.csv"), r["fitness"], r["gaits"],
                           r["half_body_x"])
+        write_json(os.path.join(rep, name, "config.json"),
+                   {"case": r["case"], "seed": r["replicate"],
+                    "evaluation": evaluation or {"relative_tolerance": 1e-7}})
+        if r["cut_offs"] is not None:
+            write_evaluations(os.path.join(rep, name, "evaluations.csv"), len(r["fitness"]),
+                              r["cut_offs"])
         last = len(r["fitness"]) - 1
         final = float(r["fitness"][-1])
         gait = r["gaits"][-1] if r["gaits"][-1] != "none" else "biped"
@@ -130,7 +163,8 @@ def write_reproduction(root, runs, generations=None, learners=("ga",), ensemble=
         "generations": generations or max(len(r["fitness"]) for r in runs),
         "replicates": max(r["replicate"] for r in runs), "seed": 1, "population": POPULATION,
         "ensemble": ensemble,
-        "program": {"commit": "0123456789ab", "evaluation": {"relative_tolerance": 1e-7}},
+        "program": {"commit": "0123456789ab",
+                    "evaluation": evaluation or {"relative_tolerance": 1e-7}},
         "scaffolds": scaffolds, "learners": [LEARNERS[l] for l in learners],
         "runs": listed, "best_biped": pick("biped"), "best_tripod": pick("tripod")})
     if walks is not None:
@@ -275,13 +309,49 @@ def write_authors_run(path, improvements):
         f.write(",\n".join(fitness) + f"\ncount: {len(fitness)}\n")
 
 
-def authors_checkout(root, runs_by_case):
-    """A stand-in checkout of the authors' repository holding only their fitness-data:
-    {case number: [improvements of run 1, of run 2, ...]}; returns its path."""
+def write_authors_labels(path, improvements, gaits):
+    """One run's gait labels in the authors' bump-data layout (bump, generation_child,
+    fitness, a genome line): [(generation, best fitness)] with a gait each."""
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("$ their script\n")
+        for k, ((g, fitness), gait) in enumerate(zip(improvements, gaits), 1):
+            f.write(f"bump {k} >>> {gait}\ncurrentGen:\n{g}_{k % 16}\nmaxFitness:\n{fitness!r}\n"
+                    "walkerVis.o 0.5 0.1\n\n")
+        f.write(f"count: {len(improvements)}\n\n2400\n>>>\n")
+
+
+def write_authors_children(path, cut_offs, population=POPULATION):
+    """One run's summarisedOutput: paper's generations of `population` children each,
+    cut_offs[g] of them (0 where absent) scoring -124, the others 1.5."""
+    with open(path, "w", encoding="utf-8") as f:
+        for g in range(4000):
+            k = cut_offs.get(g, 0)
+            fitness = ", ".join(["-124"] * k + ["1.5"] * (population - k))
+            f.write(f"Generation: {g}\nCurrent Fitness:\n[{fitness}]\n\nAll time fittest:\n"
+                    f"[1.5]\n\n")
+        f.write("[[{'halfBodyX': 0.05}, 1.5]]Done at 06_14\n")
+
+
+def authors_checkout(root, runs_by_case, gaits=None, cut_offs=None):
+    """A stand-in checkout of the authors' repository: {case number: [improvements of
+    run 1, of run 2, ...]} as their fitness-data, their gait labels (gaits: {case:
+    [[gait of each improvement] of each run]}, every best a biped where not given) in
+    files numbered in the reverse order of the runs (theirs are not always in order),
+    and every child's fitness (cut_offs: {case: [{generation: children cut off} of
+    each run]}, none where not given); returns its path."""
     checkout = os.path.join(root, "authors")
     folder = os.path.join(checkout, "CaseData", "image", "fitness-data")
+    labels = os.path.join(checkout, "CaseData", "image", "bump-data")
     os.makedirs(folder)
+    os.makedirs(labels)
     for case, runs in runs_by_case.items():
+        children = os.path.join(checkout, "CaseData", f"case{case}")
+        os.makedirs(children)
         for m, improvements in enumerate(runs, 1):
             write_authors_run(os.path.join(folder, f"case{case}-{m}.txt"), improvements)
+            run_gaits = (gaits or {}).get(case, [["biped"] * len(improvements)] * len(runs))[m - 1]
+            write_authors_labels(os.path.join(labels, f"c{case}_{len(runs) + 1 - m}.txt"),
+                                 improvements, run_gaits)
+            write_authors_children(os.path.join(children, f"summarisedOutput-{m:02d}"),
+                                   (cut_offs or {}).get(case, [{}] * len(runs))[m - 1])
     return checkout
