@@ -175,7 +175,7 @@ def finals_table(content, scaffolds):
     """The final bests: recorded against recorded, re-scored against re-scored."""
     ours = content["experiments"]
     lines = ["| case | the authors' runs: recorded | " +
-             " | ".join(f"{heading(e)}: recorded | re-scored" for e in ours) + " |",
+             " | ".join(f"{e['label']}: recorded | re-scored" for e in ours) + " |",
              "|---|---|" + "---|---|" * len(ours)]
     for s, row in zip(scaffolds, content["finals"]):
         cells = ["—" if row["authors_recorded"] is None else f"{row['authors_recorded']:.2f}"]
