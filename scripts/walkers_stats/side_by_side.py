@@ -201,8 +201,9 @@ def readme_block(content, scaffolds):
 
 def markdown(content, scaffolds):
     """experiments.md."""
-    named = "; ".join(f"{e['label']}: {e['state']}" + (f" (`{e['folder']}`)" if e["folder"] else "")
-                      for e in content["experiments"])
+    def where(folder):  # an experiment's folder, relative to this file's
+        return " (this folder)" if folder == "." else f" (`{folder}/`)" if folder else ""
+    named = "; ".join(f"{e['label']}: {e['state']}{where(e['folder'])}" for e in content["experiments"])
     parts = ["# The experiments side by side\n",
              "The authors' nine runs, ours on CVODE and ours as the authors ran it (Simbody's "
              "Runge–Kutta–Merson at their accuracy 0.05 and their cut-off), set side by side: "
