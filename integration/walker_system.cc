@@ -51,7 +51,7 @@ bool WalkerSystem::Derivatives(const Vec9& q, const Vec9& v, Vec9* a, double* z_
 }
 
 LocalError WalkerSystem::EstimateError(const SystemState& y1, const SystemState& y_check, double factor) const {
-  const FreeBodyState a = ToFreeBodies(model_, y1), b = ToFreeBodies(model_, y_check);
+  const FreeBodyState a = free_bodies_.Get(model_, y1), b = free_bodies_.Get(model_, y_check);
   LocalError e;
   e.q_size = kSimbodyQs;
   e.u_size = kSimbodyUs;
@@ -74,7 +74,7 @@ LocalError WalkerSystem::EstimateError(const SystemState& y1, const SystemState&
 }
 
 double WalkerSystem::ErrorNorm(const LocalError& error, const SystemState& y0) const {
-  const FreeBodyState start = ToFreeBodies(model_, y0);
+  const FreeBodyState start = free_bodies_.Get(model_, y0);
   double q_sum = 0, u_sum = 0;
   for (int i = 0; i < kNumFreeBodyCoords; ++i) {
     // a unit quaternion's change is half its turn's angle
@@ -88,7 +88,7 @@ double WalkerSystem::ErrorNorm(const LocalError& error, const SystemState& y0) c
 }
 
 Projection WalkerSystem::ProjectPositions(SystemState* y, LocalError* error, double tolerance, double limit) {
-  FreeBodyState s = ToFreeBodies(model_, *y);
+  FreeBodyState s = free_bodies_.Get(model_, *y);
   FreeBodyVector e = error->q.head<kNumFreeBodyCoords>();
   const SimbodyProjection how{tolerance, limit, true};
   const ProjectionOutcome outcome = ProjectFreeBodyPositions(model_, inputs_.welds, how, &s.z, &e);
@@ -100,7 +100,7 @@ Projection WalkerSystem::ProjectPositions(SystemState* y, LocalError* error, dou
 }
 
 Projection WalkerSystem::ProjectVelocities(SystemState* y, LocalError* error, double tolerance, double limit) {
-  FreeBodyState s = ToFreeBodies(model_, *y);
+  FreeBodyState s = free_bodies_.Get(model_, *y);
   FreeBodyVector e = error->u.head<kNumFreeBodyCoords>();
   const SimbodyProjection how{tolerance, limit, true};
   const ProjectionOutcome outcome = ProjectFreeBodyRates(model_, inputs_.welds, how, s.z, &s.u, &e);

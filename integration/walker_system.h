@@ -8,6 +8,7 @@
 
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/model.h"
+#include "integration/free_body_cache.h"
 #include "integration/system.h"
 
 namespace walkers {
@@ -49,6 +50,7 @@ class WalkerSystem final : public SecondOrderSystem {
   Model model_;
   Inputs inputs_;
   Workspace workspace_;
+  mutable FreeBodyCache free_bodies_;  // the authors' coordinates of the states an attempt revisits
 };
 
 }  // namespace walkers
