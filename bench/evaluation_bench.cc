@@ -7,6 +7,8 @@
 //                                                    genome (add --benchmark_enable_random_interleaving=true
 //                                                    to alternate their repetitions)
 //   evaluation_bench --benchmark_filter=Variant      the choices of docs/performance.md
+//   evaluation_bench --benchmark_filter=ByGenome/NAME/   one variant genome by genome, with its restarts
+//                                                    and located switches
 //   evaluation_bench --benchmark_filter=Generation   16 children on 2 threads
 //   evaluation_bench --benchmark_filter=Batch        bench/walkers_module_bench.py's 16 genomes on 2 threads
 #include <memory>
@@ -32,6 +34,8 @@ void EvaluateGenome(benchmark::State& st, const Genome& genome, const Evaluation
   st.counters["fitness"] = r.fitness;
   st.counters["steps"] = static_cast<double>(r.integrator_stats.steps);
   st.counters["rhs_evals"] = static_cast<double>(r.integrator_stats.rhs_evals);
+  st.counters["restarts"] = static_cast<double>(r.integrator_stats.restarts);
+  st.counters["switches_located"] = static_cast<double>(r.integrator_stats.switches_located);
 }
 
 // the whole set under one variant: items are evaluations
@@ -101,6 +105,14 @@ const bool kRegistered = [] {
     for (const char* method : {"cvode", "rk-merson"}) {
       benchmark::RegisterBenchmark(("Integrator/" + name + "/" + method).c_str(), EvaluateGenome, genome,
                                    SettingsOfIntegrator(method, std::nullopt, 0))
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  // each variant on each genome of the benchmark set: its steps, restarts and located switches
+  for (const Variant& v : Variants()) {
+    for (const auto& [name, genome] : GenomeSet("bench")) {
+      benchmark::RegisterBenchmark(("ByGenome/" + v.name + "/" + name).c_str(), EvaluateGenome, genome,
+                                   v.settings)
           ->Unit(benchmark::kMillisecond);
     }
   }

@@ -52,6 +52,11 @@ inline std::vector<Variant> Variants() {
     s->integrator.restart_at_ticks = true;
     s->integrator.restart_with_last_step = true;
   });
+  add("contact_events", [](EvaluationSettings* s) { s->integrator.locate_contact_switches = true; });
+  add("contact_events_restart_every_tick", [](EvaluationSettings* s) {
+    s->integrator.locate_contact_switches = true;
+    s->integrator.restart_at_ticks = true;
+  });
   add("velocity_atol_3e-6", [](EvaluationSettings* s) { s->integrator.absolute_tolerance_velocity = 3e-6; });
   add("velocity_atol_3e-6_restart_every_tick", [](EvaluationSettings* s) {
     s->integrator.absolute_tolerance_velocity = 3e-6;

@@ -142,6 +142,93 @@ bool TrunkSupported(const Model& model, const Kinematics& kin) {
   return supported;
 }
 
+namespace {
+
+// the deepest of a ground mesh's sites below the ground: -(y + R site.p).y
+double DeepestBelowGround(const GroundMesh& mesh, const BodyMotion<double>& body) {
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const GroundSite& site : mesh.sites()) {
+    deepest = std::max(deepest, -(body.p.y() + body.sin * site.p.x() + body.cos * site.p.y()));
+  }
+  return deepest;
+}
+
+// the deepest of mesh m's sites inside box o: the smaller of its margins to
+// o's x and y faces (MeshInBox's test; the sites lie within o's z extent)
+double DeepestInBox(const std::vector<BoxSite>& sites, const BodyMotion<double>& m, const BodyMotion<double>& o,
+                    const Vec2& half_o) {
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const BoxSite& site : sites) {
+    const Vec2 d = m.p + contact_laws::Rotate<double>(m.cos, m.sin, site.p) - o.p;
+    const Vec2 u(o.cos * d.x() + o.sin * d.y(), -o.sin * d.x() + o.cos * d.y());
+    deepest = std::max(deepest, std::min(half_o.x() - std::abs(u.x()), half_o.y() - std::abs(u.y())));
+  }
+  return deepest;
+}
+
+// the deepest of mesh m's sites inside the sphere about k's reference point
+double DeepestInSphere(const std::vector<SphereSite>& sites, double radius, const BodyMotion<double>& m,
+                       const BodyMotion<double>& k) {
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const SphereSite& site : sites) {
+    const Vec2 d = m.p + contact_laws::Rotate<double>(m.cos, m.sin, site.p) - k.p;
+    deepest = std::max(deepest, radius - std::sqrt(d.squaredNorm() + site.dz2));
+  }
+  return deepest;
+}
+
+}  // namespace
+
+ContactSwitches ContactSwitchDepths(const Model& model, const Kinematics& kin, const Welds& welds) {
+  ContactSwitches depth;
+  depth.fill(-1.0);
+  std::array<BodyMotion<double>, kNumContactBodies> motions;
+  for (int i = 0; i < kNumContactBodies; ++i) motions[i] = MotionOf(kin, static_cast<ContactBody>(i));
+  const BodyParameters& body = model.body;
+  const ContactSites& sites = model.sites;
+  const Vec2 half_trunk(body.half_body_x, body.half_body_y), half_foot(body.half_foot_x, body.half_foot_y);
+  const double radius = model.contact.knee_radius;
+  for (int pair = 0; pair < kNumContactPairs; ++pair) {
+    const ContactPairSpec& spec = ContactPairs()[pair];
+    if (!PairEnabled(model.options, spec) || HeldByWeld(spec, welds)) continue;
+    const BodyMotion<double>& a = motions[static_cast<int>(spec.a)];
+    const BodyMotion<double>& b = motions[static_cast<int>(spec.b)];
+    // no site can be inside: the -1 keeps the sign
+    if (!contact_laws::MayTouch(model, spec, a, b)) continue;
+    switch (spec.law) {
+      case ContactLaw::kMeshOnGround:
+        depth[pair] = DeepestBelowGround(spec.b == ContactBody::kTrunk ? sites.trunk_ground : sites.foot_ground, b);
+        break;
+      case ContactLaw::kSphereOnGround:
+        depth[pair] = radius - b.p.y();
+        break;
+      case ContactLaw::kMeshOnMesh:
+        // a = trunk, b = foot: the trunk's sites in the foot, the foot's in the trunk
+        depth[pair] = std::max(DeepestInBox(sites.trunk_in_foot[spec.leg], a, b, half_foot),
+                               DeepestInBox(sites.foot_in_trunk[spec.leg], b, a, half_trunk));
+        break;
+      case ContactLaw::kMeshOnSphere:
+        depth[pair] = DeepestInSphere(
+            spec.a == ContactBody::kTrunk ? sites.trunk_in_knee[spec.leg] : sites.foot_in_knee, radius, a, b);
+        break;
+    }
+  }
+  return depth;
+}
+
+JointStopSwitches JointStopMargins(const Model& model, const Vec9& q) {
+  JointStopSwitches margin;
+  margin.fill(-1.0);
+  if (!model.options.joint_stops) return margin;
+  for (int leg = 0; leg < kNumLegs; ++leg) {
+    for (int joint = 0; joint < kNumJoints; ++joint) {
+      const int i = JointIndex(leg, joint);
+      margin[i - JointIndex(kLeft, kHip)] = std::abs(q(i)) - model.stops[joint].limit;
+    }
+  }
+  return margin;
+}
+
 double JointStopTorque(const JointStop& stop, double angle, double rate) {
   // overrun x past the limit, pushing back with a Hunt–Crossley style damper
   if (angle > stop.limit) {

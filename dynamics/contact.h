@@ -93,6 +93,23 @@ void AddJointStopTorques(const Model& model, const Vec9& q, const Vec9& v, Vec9*
 // Torque of one joint stop at angle and rate.
 double JointStopTorque(const JointStop& stop, double angle, double rate);
 
+// Where the contact forces switch law, as functions of the state that cross
+// zero there (for an integrator that locates such events): per pair, the
+// signed depth [m] of its deepest spring site (or knee sphere) in the other
+// surface, positive while some site is inside, so zero where the pair starts
+// or stops touching. A site's depth is the one its law pushes with (for a box,
+// the smaller of its margins to the x and y faces). Continuous in q; -1 for a
+// pair that is off (disabled, or held by a weld) or whose surfaces cannot
+// meet (MayTouch), which keeps its sign. A spring that would pull, inside,
+// is counted as touching: its switch is not located.
+using ContactSwitches = std::array<double, kNumContactPairs>;
+ContactSwitches ContactSwitchDepths(const Model& model, const Kinematics& kin, const Welds& welds);
+
+// Per joint (JointIndex order) how far past its stop it is, |angle| - limit
+// [rad]: zero where the stop engages or lets go; -1 without joint stops.
+using JointStopSwitches = std::array<double, kNumLegs * kNumJoints>;
+JointStopSwitches JointStopMargins(const Model& model, const Vec9& q);
+
 // Elastic energy stored in the contact springs and joint stops [J].
 double ElasticEnergy(const Model& model, const Kinematics& kin);
 

@@ -65,6 +65,13 @@ struct CvodeCallbacks {
     if (!static_cast<CvodeIntegrator*>(self)->EvaluateJacobian(N_VGetArrayPointer(y), &da_dq, &da_dv)) return -1;
     return StoreWalkerJacobian(da_dq, da_dv, jacobian) ? 0 : -1;
   }
+  // the system's switch functions, whose zeros CVODE's root finding locates
+  static int Switches(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* self) {
+    const double* state = N_VGetArrayPointer(y);
+    static_cast<CvodeIntegrator*>(self)->system_.SwitchFunctions(Eigen::Map<const Vec9>(state),
+                                                                 Eigen::Map<const Vec9>(state + kNumCoords), g);
+    return 0;
+  }
   static void ErrorHandler(int /*code*/, const char* /*module*/, const char* /*function*/, char* message,
                            void* self) {
     // keep CVODE quiet: the message travels back to the caller in the status
@@ -136,6 +143,13 @@ CvodeIntegrator::CvodeIntegrator(SecondOrderSystem& system, const IntegratorSett
   if (settings.jacobian == JacobianSource::kAnalytic) {
     Check(CVodeSetJacFn(cv_->mem, &CvodeCallbacks::Jacobian), "CVodeSetJacFn");
   }
+
+  // root finding on the switch functions (kept across CVodeReInit); a
+  // function that is zero at a restart is not reported there
+  if (settings.locate_contact_switches && system.NumSwitchFunctions() > 0) {
+    Check(CVodeRootInit(cv_->mem, system.NumSwitchFunctions(), &CvodeCallbacks::Switches), "CVodeRootInit");
+    Check(CVodeSetNoInactiveRootWarn(cv_->mem), "CVodeSetNoInactiveRootWarn");
+  }
 }
 
 CvodeIntegrator::~CvodeIntegrator() = default;
@@ -146,6 +160,7 @@ void CvodeIntegrator::Reset(double t0, const SystemState& state) {
   Check(CVodeReInit(cv_->mem, t0, cv_->y), "CVodeReInit");
   finished_ = IntegratorStats{};
   rhs_evals_ = 0;
+  switches_located_ = 0;
   needs_restart_ = false;
   non_finite_ = false;
 }
@@ -194,6 +209,7 @@ IntegratorStats CvodeIntegrator::stats() const {
   CVodeGetNumNonlinSolvConvFails(cv_->mem, &n);
   s.nonlinear_failures += n;
   s.rhs_evals = rhs_evals_;
+  s.switches_located = switches_located_;
   return s;
 }
 
@@ -266,6 +282,24 @@ void CvodeIntegrator::SetStepObserver(StepObserver observer) {
 }
 
 int CvodeIntegrator::RunCvode(double t, double* t_reached) {
+  for (;;) {
+    const int flag = RunCvodeToRoot(t, t_reached);
+    if (flag != CV_ROOT_RETURN) return flag;
+    // a switch located (locate_contact_switches): restart CVODE at it, so
+    // that its history starts on the switch's far side, and carry on to t
+    ++switches_located_;
+    t_ = *t_reached;
+    CopyStateFromVector();
+    Restart();
+    if (!(*t_reached < t)) return CV_SUCCESS;
+    const long remaining = settings_.step_budget - stats().steps;
+    if (remaining <= 0) return CV_TOO_MUCH_WORK;
+    CVodeSetMaxNumSteps(cv_->mem, remaining);
+    CVodeSetStopTime(cv_->mem, t);
+  }
+}
+
+int CvodeIntegrator::RunCvodeToRoot(double t, double* t_reached) {
   if (!probe_) return CVode(cv_->mem, t, cv_->y, t_reached, CV_NORMAL);
 
   // CV_ONE_STEP under the stop time t takes the steps CV_NORMAL takes (the
@@ -297,6 +331,7 @@ int CvodeIntegrator::RunCvode(double t, double* t_reached) {
     info.state = &state_;
     probe_->observer(info);
 
+    if (flag == CV_ROOT_RETURN) return flag;
     if (flag == CV_TSTOP_RETURN || !(*t_reached < t)) return CV_SUCCESS;
   }
   return CV_TOO_MUCH_WORK;

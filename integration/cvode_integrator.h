@@ -61,13 +61,18 @@ class CvodeIntegrator final : public TimeStepper {
   std::string last_cvode_message_;
   IntegratorStats finished_;  // stats of CVODE runs before the last restart
   long rhs_evals_ = 0;
+  long switches_located_ = 0;
 
   struct Cvode;  // SUNDIALS handles
   std::unique_ptr<Cvode> cv_;
 
   // CVODE to the stop time t, in one call or, with a step observer, one step
-  // at a time, within the step budget. Returns CVODE's flag.
+  // at a time, within the step budget, restarting at every switch it
+  // locates. Returns CVODE's flag.
   int RunCvode(double t, double* t_reached);
+  // the same up to the stop time or the first located switch (CV_ROOT_RETURN,
+  // the state at the switch)
+  int RunCvodeToRoot(double t, double* t_reached);
   struct StepProbe;  // the step observer and its vectors
   std::unique_ptr<StepProbe> probe_;
 };

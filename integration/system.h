@@ -6,6 +6,8 @@
 //
 // Beyond the accelerations, a method may use:
 // - their Jacobian (CVODE's Newton iteration);
+// - functions whose zeros mark where the right-hand side switches (CVODE's
+//   root finding, when asked to locate the switches);
 // - Simbody's view of the system (RK-Merson, integration/rk_merson.h): an
 //   auxiliary variable z with z' = w(q, v) that only the error control sees,
 //   the local error measured in the system's own coordinates, and exact
@@ -58,6 +60,15 @@ class SecondOrderSystem {
 
   // A coordinate held fixed: its rate stays 0.
   virtual bool Locked(int /*coordinate*/) const { return false; }
+
+  // Functions of the state that cross zero where the right-hand side switches
+  // law (a contact starting or ending): continuous, of one sign between
+  // switches. An integrator that locates events (IntegratorSettings::
+  // locate_contact_switches) finds their zeros and restarts there. By
+  // default there are none.
+  virtual int NumSwitchFunctions() const { return 0; }
+  // g[0..NumSwitchFunctions()) at (q, v)
+  virtual void SwitchFunctions(const Vec9& /*q*/, const Vec9& /*v*/, double* /*g*/) {}
 
   // The accelerations and z' together; by default z' = 0.
   virtual bool Derivatives(const Vec9& q, const Vec9& v, Vec9* a, double* z_rate);

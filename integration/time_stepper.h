@@ -63,6 +63,12 @@ struct IntegratorSettings {
   bool restart_at_ticks = false;
   // A restart begins with the step CVODE last took instead of its own estimate.
   bool restart_with_last_step = false;
+  // Locate where the right-hand side switches law (a contact pair starting or
+  // stopping to touch, a joint stop engaging or letting go: the system's
+  // SwitchFunctions) with CVODE's root finding, and restart CVODE there, so
+  // that its history never straddles a kink of the contact forces. A lever
+  // measured in docs/performance.md; off in production.
+  bool locate_contact_switches = false;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
   // (integration/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones
   // (the block Newton matrix has only its own fixed-size operations).
@@ -85,6 +91,7 @@ struct IntegratorStats {
   // onto the constraints failed
   long nonlinear_failures = 0;
   long restarts = 0;
+  long switches_located = 0;  // roots of the system's switch functions (locate_contact_switches)
 };
 
 enum class IntegrationFailure { kNone, kNonFinite, kStepBudget, kSolver };

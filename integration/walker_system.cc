@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
+#include "dynamics/contact.h"
 #include "dynamics/jacobian.h"
+#include "dynamics/kinematics.h"
 #include "dynamics/planting.h"
 
 namespace walkers {
@@ -41,6 +44,19 @@ bool WalkerSystem::Accelerations(const Vec9& q, const Vec9& v, Vec9* a) {
 
 bool WalkerSystem::AccelerationJacobian(const Vec9& q, const Vec9& v, Mat9* da_dq, Mat9* da_dv) {
   return walkers::AccelerationJacobian(model_, inputs_, q, v, &workspace_, da_dq, da_dv);
+}
+
+int WalkerSystem::NumSwitchFunctions() const {
+  return std::tuple_size_v<ContactSwitches> + std::tuple_size_v<JointStopSwitches>;
+}
+
+void WalkerSystem::SwitchFunctions(const Vec9& q, const Vec9& /*v*/, double* g) {
+  // positions alone decide where a contact or a stop switches
+  ComputeKinematics(model_, q, Vec9::Zero(), &switch_kinematics_);
+  const ContactSwitches contacts = ContactSwitchDepths(model_, switch_kinematics_, inputs_.welds);
+  const JointStopSwitches stops = JointStopMargins(model_, q);
+  std::copy(contacts.begin(), contacts.end(), g);
+  std::copy(stops.begin(), stops.end(), g + contacts.size());
 }
 
 bool WalkerSystem::Derivatives(const Vec9& q, const Vec9& v, Vec9* a, double* z_rate) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/kinematics.h"
 #include "dynamics/model.h"
 #include "integration/free_body_cache.h"
 #include "integration/system.h"
@@ -28,6 +29,10 @@ class WalkerSystem final : public SecondOrderSystem {
   // AccelerationJacobian (dynamics/jacobian.h)
   bool AccelerationJacobian(const Vec9& q, const Vec9& v, Mat9* da_dq, Mat9* da_dv) override;
   bool Locked(int coordinate) const override { return model_.options.locked[coordinate]; }
+  // Every contact pair's deepest site (ContactSwitchDepths: a welded foot's
+  // ground pair is off) and every joint stop's margin (JointStopMargins).
+  int NumSwitchFunctions() const override;
+  void SwitchFunctions(const Vec9& q, const Vec9& v, double* g) override;
 
   // z' = the power the contact's damping and friction dissipate (Simbody's
   // CompliantContactSubsystem with setTrackDissipatedEnergy, as walker.cpp
@@ -51,6 +56,7 @@ class WalkerSystem final : public SecondOrderSystem {
   Inputs inputs_;
   Workspace workspace_;
   mutable FreeBodyCache free_bodies_;  // the authors' coordinates of the states an attempt revisits
+  Kinematics switch_kinematics_;  // SwitchFunctions' scratch
 };
 
 }  // namespace walkers

@@ -236,6 +236,77 @@ TEST_F(ContactTest, AKneeLeaningOnItsFootIsHeldUp) {
   EXPECT_FALSE(r[kFootKneeR].touching);
 }
 
+// ---- where the contact forces switch (an integrator's events) ----
+
+// Each pair's switch function is the depth of its deepest site: positive
+// exactly where the pair touches (at rest, where no spring pulls), zero where
+// it starts or stops touching; a welded foot's ground pair is off.
+TEST_F(ContactTest, SwitchDepthsAreTheDeepestSitesAndChangeSignWhereAPairStartsToTouch) {
+  const auto depths = [](const Model& m, const State& s, const Welds& welds) {
+    Kinematics kin;
+    ComputeKinematics(m, s.q, s.v, &kin);
+    return ContactSwitchDepths(m, kin, welds);
+  };
+  State on_foot = testing::TrunkAt(2.0, 0.0);
+  testing::PlaceAnkle(model_, kLeft, Vec2(0.3, -(model_.body.half_foot_y - 1e-3)), &on_foot);
+  const testing::Posed knee_in_trunk = testing::KneeInTheTrunk(model_.body, kRight, 3e-3);
+  const testing::Posed knee_on_foot = testing::KneeOnItsFoot(model_.body, kLeft, 3e-3);
+  struct Case {
+    const char* what;
+    const Model& model;
+    State state;
+    int pair;
+    double depth;  // [m]
+  };
+  for (const Case& c : {Case{"the trunk on a foot, 1 mm in", model_, on_foot, kTrunkFootL, 1e-3},
+                        Case{"a knee 3 mm in the trunk", knee_in_trunk.model, knee_in_trunk.state, kTrunkKneeR, 3e-3},
+                        Case{"a knee 3 mm in its foot", knee_on_foot.model, knee_on_foot.state, kFootKneeL, 3e-3}}) {
+    SCOPED_TRACE(c.what);
+    const ContactSwitches d = depths(c.model, c.state, Welds{});
+    const ContactReports r = Reports(c.model, c.state);
+    EXPECT_NEAR(d[c.pair], c.depth, 1e-9);
+    for (int pair = 0; pair < kNumContactPairs; ++pair) {
+      EXPECT_EQ(d[pair] > 0.0, r[pair].touching) << ContactPairs()[pair].name << ": " << d[pair];
+    }
+  }
+
+  // a tilted trunk 60 mm into the ground, raised by its deepest site's depth
+  // all but a micrometre, then a micrometre more
+  const double pitch = 0.3;
+  State s = testing::TrunkAt(0.0, pitch);
+  s.q(kY) = std::sin(pitch) * model_.body.half_body_x + std::cos(pitch) * model_.body.half_body_y - 60e-3;
+  const double deepest = depths(model_, s, Welds{})[kGroundTrunk];
+  EXPECT_GT(deepest, 0.0);
+  EXPECT_LT(deepest, 60e-3);  // the springs sit in from the corner
+  s.q(kY) += deepest - 1e-6;
+  EXPECT_NEAR(depths(model_, s, Welds{})[kGroundTrunk], 1e-6, 1e-12);
+  EXPECT_TRUE(Reports(s)[kGroundTrunk].touching);
+  s.q(kY) += 2e-6;
+  EXPECT_NEAR(depths(model_, s, Welds{})[kGroundTrunk], -1e-6, 1e-12);
+  EXPECT_FALSE(Reports(s)[kGroundTrunk].touching);
+
+  // a welded foot's ground pair is off, whatever its depth
+  Welds welds;
+  welds[kRight].active = true;
+  const ContactSwitches welded = depths(model_, State{}, welds);
+  EXPECT_EQ(welded[kGroundFootR], -1.0);
+  EXPECT_NE(welded[kGroundFootL], -1.0);
+}
+
+TEST_F(ContactTest, JointStopMarginsAreTheOverrunPastEachLimit) {
+  Vec9 q = Vec9::Zero();
+  q(JointIndex(kRight, kKnee)) = -(model_.stops[kKnee].limit + 0.1);
+  q(JointIndex(kLeft, kHip)) = model_.stops[kHip].limit - 0.2;
+  const JointStopSwitches margin = JointStopMargins(model_, q);
+  const auto at = [&](int leg, int joint) { return margin[JointIndex(leg, joint) - JointIndex(kLeft, kHip)]; };
+  EXPECT_NEAR(at(kRight, kKnee), 0.1, 1e-12);
+  EXPECT_NEAR(at(kLeft, kHip), -0.2, 1e-12);
+  EXPECT_EQ(at(kLeft, kAnkle), -model_.stops[kAnkle].limit);
+  Model without = model_;
+  without.options.joint_stops = false;
+  for (double m : JointStopMargins(without, q)) EXPECT_EQ(m, -1.0);
+}
+
 // ---- the power contact dissipates (Simbody's power loss) ----
 
 // The same walker without its contact's damping and friction.
