@@ -66,8 +66,10 @@ struct IntegratorSettings {
   // Locate where the right-hand side switches law (a contact pair starting or
   // stopping to touch, a joint stop engaging or letting go: the system's
   // SwitchFunctions) with CVODE's root finding, and restart CVODE there, so
-  // that its history never straddles a kink of the contact forces. A lever
-  // measured in docs/performance.md; off in production.
+  // that its history never straddles a kink of the contact forces. Off in
+  // production: a swing's steps go to the toe's impact and to the foot on its
+  // springs, not to the switches, so it takes as many steps or more, and the
+  // switch functions cost about a fifth of a step each (docs/performance.md).
   bool locate_contact_switches = false;
   // CVODE's vector and matrix bookkeeping through fixed-size loops
   // (integration/fixed_size_ops.h) instead of SUNDIALS' run-time-length ones

@@ -53,10 +53,10 @@ class WalkerSystem final : public SecondOrderSystem {
 
  private:
   Model model_;
+  Kinematics switch_kinematics_;  // SwitchFunctions' scratch
   Inputs inputs_;
   Workspace workspace_;
   mutable FreeBodyCache free_bodies_;  // the authors' coordinates of the states an attempt revisits
-  Kinematics switch_kinematics_;  // SwitchFunctions' scratch
 };
 
 }  // namespace walkers
