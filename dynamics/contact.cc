@@ -144,12 +144,16 @@ bool TrunkSupported(const Model& model, const Kinematics& kin) {
 
 namespace {
 
-// the deepest of a ground mesh's sites below the ground: -(y + R site.p).y
+using contact_laws::BoxMargins;
+using contact_laws::BoxView;
+using contact_laws::GroundView;
+using contact_laws::SphereView;
+
+// the deepest of a ground mesh's sites below the ground
 double DeepestBelowGround(const GroundMesh& mesh, const BodyMotion<double>& body) {
+  const GroundView view(body);
   double deepest = -std::numeric_limits<double>::infinity();
-  for (const GroundSite& site : mesh.sites()) {
-    deepest = std::max(deepest, -(body.p.y() + body.sin * site.p.x() + body.cos * site.p.y()));
-  }
+  for (const GroundSite& site : mesh.sites()) deepest = std::max(deepest, view.Depth(site.p));
   return deepest;
 }
 
@@ -157,23 +161,18 @@ double DeepestBelowGround(const GroundMesh& mesh, const BodyMotion<double>& body
 // o's x and y faces (MeshInBox's test; the sites lie within o's z extent)
 double DeepestInBox(const std::vector<BoxSite>& sites, const BodyMotion<double>& m, const BodyMotion<double>& o,
                     const Vec2& half_o) {
+  const BoxView view(m, o);
   double deepest = -std::numeric_limits<double>::infinity();
-  for (const BoxSite& site : sites) {
-    const Vec2 d = m.p + contact_laws::Rotate<double>(m.cos, m.sin, site.p) - o.p;
-    const Vec2 u(o.cos * d.x() + o.sin * d.y(), -o.sin * d.x() + o.cos * d.y());
-    deepest = std::max(deepest, std::min(half_o.x() - std::abs(u.x()), half_o.y() - std::abs(u.y())));
-  }
+  for (const BoxSite& site : sites) deepest = std::max(deepest, BoxMargins(half_o, view.Site(site.p)).minCoeff());
   return deepest;
 }
 
 // the deepest of mesh m's sites inside the sphere about k's reference point
 double DeepestInSphere(const std::vector<SphereSite>& sites, double radius, const BodyMotion<double>& m,
                        const BodyMotion<double>& k) {
+  const SphereView view(m, k);
   double deepest = -std::numeric_limits<double>::infinity();
-  for (const SphereSite& site : sites) {
-    const Vec2 d = m.p + contact_laws::Rotate<double>(m.cos, m.sin, site.p) - k.p;
-    deepest = std::max(deepest, radius - std::sqrt(d.squaredNorm() + site.dz2));
-  }
+  for (const SphereSite& site : sites) deepest = std::max(deepest, radius - std::sqrt(view.SquaredDistance(site)));
   return deepest;
 }
 
@@ -197,7 +196,7 @@ ContactSwitches ContactSwitchDepths(const Model& model, const Kinematics& kin, c
     if (!contact_laws::MayTouch(model, spec, a, b)) continue;
     switch (spec.law) {
       case ContactLaw::kMeshOnGround:
-        depth[pair] = DeepestBelowGround(spec.b == ContactBody::kTrunk ? sites.trunk_ground : sites.foot_ground, b);
+        depth[pair] = DeepestBelowGround(contact_laws::GroundSitesOf(sites, spec), b);
         break;
       case ContactLaw::kSphereOnGround:
         depth[pair] = radius - b.p.y();
@@ -208,8 +207,7 @@ ContactSwitches ContactSwitchDepths(const Model& model, const Kinematics& kin, c
                                DeepestInBox(sites.foot_in_trunk[spec.leg], b, a, half_trunk));
         break;
       case ContactLaw::kMeshOnSphere:
-        depth[pair] = DeepestInSphere(
-            spec.a == ContactBody::kTrunk ? sites.trunk_in_knee[spec.leg] : sites.foot_in_knee, radius, a, b);
+        depth[pair] = DeepestInSphere(contact_laws::KneeSitesOf(sites, spec), radius, a, b);
         break;
     }
   }

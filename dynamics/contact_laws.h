@@ -115,6 +115,78 @@ bool CountsPower(const ContactReport* r) {
   }
 }
 
+// ---- each law's site geometry, in plain doubles ----
+// Where a law's sites lie relative to the other surface: the laws below test
+// with these which sites touch before any S arithmetic, the right-hand side's
+// sums (contact_sums.cc) work in these frames throughout, and the contact
+// switches (ContactSwitchDepths, contact.cc) find the deepest site by them.
+
+// A ground mesh's sites on a body at height y, turned by (c, s).
+struct GroundView {
+  double y, c, s;
+  template <typename S>
+  explicit GroundView(const BodyMotion<S>& body) : y(Value(body.p.y())), c(Value(body.cos)), s(Value(body.sin)) {}
+  // a site's height above the body's reference point: (R p).y
+  double Rise(const Vec2& p) const { return s * p.x() + c * p.y(); }
+  // its depth below the ground, positive inside
+  double Depth(const Vec2& p) const { return -(y + Rise(p)); }
+};
+
+// Mesh m's sites in the frame of box o: a site p of m lies at u0 + R_rel p.
+struct BoxView {
+  double c_rel, s_rel;  // cos and sin of angle_m - angle_o
+  Vec2 u0;              // m's reference point in o's frame
+  double centre_x;      // o's reference point along m's x axis
+  template <typename S>
+  BoxView(const BodyMotion<S>& m, const BodyMotion<S>& o) {
+    const double cm = Value(m.cos), sm = Value(m.sin), co = Value(o.cos), so = Value(o.sin);
+    const double dx = Value(m.p.x()) - Value(o.p.x()), dy = Value(m.p.y()) - Value(o.p.y());
+    c_rel = cm * co + sm * so;
+    s_rel = sm * co - cm * so;
+    u0 = Vec2(co * dx + so * dy, -so * dx + co * dy);
+    centre_x = -(cm * dx + sm * dy);
+  }
+  Vec2 Site(const Vec2& p) const {
+    return Vec2(u0.x() + c_rel * p.x() - s_rel * p.y(), u0.y() + s_rel * p.x() + c_rel * p.y());
+  }
+  // Only sites within the x extent of o's bounding box in m's frame can be inside o.
+  auto Candidates(const std::vector<BoxSite>& sites, const Vec2& half_o) const {
+    const double reach = std::abs(c_rel) * half_o.x() + std::abs(s_rel) * half_o.y();
+    return SitesWithinX(sites, centre_x - reach, centre_x + reach);
+  }
+};
+
+// A point's margins to a box's x and y faces, u in the box's frame: both positive inside.
+inline Vec2 BoxMargins(const Vec2& half, const Vec2& u) {
+  return Vec2(half.x() - std::abs(u.x()), half.y() - std::abs(u.y()));
+}
+
+// Mesh m's sites about the centre of knee sphere k (its reference point), in m's frame.
+struct SphereView {
+  Vec2 centre;  // the sphere's centre in m's frame
+  template <typename S>
+  SphereView(const BodyMotion<S>& m, const BodyMotion<S>& k) {
+    const double c = Value(m.cos), s = Value(m.sin);
+    const double kx = Value(k.p.x()) - Value(m.p.x()), ky = Value(k.p.y()) - Value(m.p.y());
+    centre = Vec2(c * kx + s * ky, -s * kx + c * ky);
+  }
+  // a site's squared distance from the centre in 3D
+  double SquaredDistance(const SphereSite& site) const { return (site.p - centre).squaredNorm() + site.dz2; }
+  auto Candidates(const std::vector<SphereSite>& sites, double radius) const {
+    return SitesWithinX(sites, centre.x() - radius, centre.x() + radius);
+  }
+};
+
+// Each pair's site lists: a mesh on the ground, a mesh in a knee sphere
+// (a = the mesh); the mesh pairs' two lists are ContactSites' trunk_in_foot
+// and foot_in_trunk.
+inline const GroundMesh& GroundSitesOf(const ContactSites& sites, const ContactPairSpec& spec) {
+  return spec.b == ContactBody::kTrunk ? sites.trunk_ground : sites.foot_ground;
+}
+inline const std::vector<SphereSite>& KneeSitesOf(const ContactSites& sites, const ContactPairSpec& spec) {
+  return spec.a == ContactBody::kTrunk ? sites.trunk_in_knee[spec.leg] : sites.foot_in_knee;
+}
+
 // Simbody's quintic step 10x^3 - 15x^4 + 6x^5 on [0, 1]
 template <typename S>
 S Step5(const S& x) {
@@ -172,13 +244,12 @@ bool FoundationNormal(const FoundationLaw& law, double area, const S& d, const S
 template <typename S>
 void MeshOnGround(const FoundationLaw& law, const GroundMesh& mesh, const BodyMotion<S>& body, Wrench<S>* w,
                   ContactReport* r) {
-  const double ca = Value(body.cos), sa = Value(body.sin);
+  const GroundView view(body);
   const S& c = body.cos;
   const S& s = body.sin;
-  const double y = Value(body.p.y());
-  for (const GroundSite& site : mesh.CanTouch(ca, sa, y)) {
+  for (const GroundSite& site : mesh.CanTouch(view.c, view.s, view.y)) {
     // a site above the ground pushes nothing; tested in plain doubles, before any S arithmetic
-    if (y + sa * site.p.x() + ca * site.p.y() >= 0.0) continue;
+    if (view.Depth(site.p) <= 0.0) continue;
     const V2<S> r_site = Rotate<S>(c, s, site.p);
     const S depth = -(body.p.y() + r_site.y());
     if (Value(depth) <= 0.0) continue;
@@ -236,23 +307,13 @@ void MeshInBox(const FoundationLaw& law, double scale, const std::vector<BoxSite
   const S& sm = m.sin;
   const S& co = o.cos;
   const S& so = o.sin;
-  // In plain doubles first, whether a site is inside the other box at all:
-  // in the other box's frame it sits at u0 + R(angle_m - angle_o) site.p.
-  const double cmv = Value(cm), smv = Value(sm), cov = Value(co), sov = Value(so);
-  const double c_rel = cmv * cov + smv * sov, s_rel = smv * cov - cmv * sov;
-  const double dx = Value(m.p.x()) - Value(o.p.x()), dy = Value(m.p.y()) - Value(o.p.y());
-  const double u0x = cov * dx + sov * dy, u0y = -sov * dx + cov * dy;
-  // only sites within the x extent of the other box's bounding box in this
-  // mesh's frame can be inside it
-  const double centre_x = -(cmv * dx + smv * dy);
-  const double reach = std::abs(c_rel) * half_o.x() + std::abs(s_rel) * half_o.y();
-  const auto [first, last] = SitesWithinX(sites, centre_x - reach, centre_x + reach);
+  // in plain doubles first, whether a site is inside the other box at all
+  const BoxView view(m, o);
+  const auto [first, last] = view.Candidates(sites, half_o);
   for (auto it = first; it != last; ++it) {
     const BoxSite& site = *it;
-    if (std::abs(u0x + c_rel * site.p.x() - s_rel * site.p.y()) >= half_o.x() ||
-        std::abs(u0y + s_rel * site.p.x() + c_rel * site.p.y()) >= half_o.y()) {
-      continue;
-    }
+    const Vec2 margins = BoxMargins(half_o, view.Site(site.p));
+    if (margins.x() <= 0.0 || margins.y() <= 0.0) continue;
     const V2<S> p = m.p + Rotate<S>(cm, sm, site.p);
     // the site in the other box's frame
     const V2<S> d = p - o.p;
@@ -299,15 +360,12 @@ void MeshInSphere(const FoundationLaw& law, const std::vector<SphereSite>& sites
   const S& c = m.cos;
   const S& s = m.sin;
   const double r2 = radius * radius;
-  // In plain doubles first, whether a site is inside the sphere at all: the
-  // sphere's centre in the mesh's frame
-  const double cv = Value(c), sv = Value(s);
-  const double kx = Value(k.p.x()) - Value(m.p.x()), ky = Value(k.p.y()) - Value(m.p.y());
-  const Vec2 centre(cv * kx + sv * ky, -sv * kx + cv * ky);
-  const auto [first, last] = SitesWithinX(sites, centre.x() - radius, centre.x() + radius);
+  // in plain doubles first, whether a site is inside the sphere at all
+  const SphereView view(m, k);
+  const auto [first, last] = view.Candidates(sites, radius);
   for (auto it = first; it != last; ++it) {
     const SphereSite& site = *it;
-    if ((site.p - centre).squaredNorm() + site.dz2 >= r2) continue;
+    if (view.SquaredDistance(site) >= r2) continue;
     const V2<S> p = m.p + Rotate<S>(c, s, site.p);
     const V2<S> d = p - k.p;
     const S d3_squared = d.squaredNorm() + site.dz2;
@@ -395,11 +453,7 @@ PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, 
   if (!MayTouch<S>(model, spec, a, b)) return out;
   switch (spec.law) {
     case ContactLaw::kMeshOnGround:
-      if (spec.b == ContactBody::kTrunk) {
-        MeshOnGround<S>(model.laws.mesh_ground, sites.trunk_ground, b, &out.on_b, &out.report);
-      } else {
-        MeshOnGround<S>(model.laws.mesh_ground, sites.foot_ground, b, &out.on_b, &out.report);
-      }
+      MeshOnGround<S>(model.laws.mesh_ground, GroundSitesOf(sites, spec), b, &out.on_b, &out.report);
       break;
     case ContactLaw::kSphereOnGround:
       SphereOnGround<S>(model.laws.knee_ground, radius, b, &out.on_b, &out.report);
@@ -414,9 +468,8 @@ PairResult<S> PairContact(const Model& model, int pair, const BodyMotion<S>& a, 
     }
     case ContactLaw::kMeshOnSphere: {
       // a = the mesh (trunk or foot), b = the knee
-      const std::vector<SphereSite>& list =
-          spec.a == ContactBody::kTrunk ? sites.trunk_in_knee[spec.leg] : sites.foot_in_knee;
-      MeshInSphere<S>(model.laws.mesh_knee, list, radius, a, b, &out.on_a, &out.on_b, &out.report);
+      MeshInSphere<S>(model.laws.mesh_knee, KneeSitesOf(sites, spec), radius, a, b, &out.on_a, &out.on_b,
+                      &out.report);
       break;
     }
   }

@@ -21,15 +21,14 @@ Vec2 FromFrame(double c, double s, const Vec2& v) { return Vec2(c * v.x() - s * 
 template <>
 void MeshOnGround<double>(const FoundationLaw& law, const GroundMesh& mesh, const BodyMotion<double>& body,
                           Wrench<double>* w, ContactReport* r) {
-  const double c = body.cos, s = body.sin;
+  const GroundView view(body);
   // in the world frame, about the body's reference point
   Vec2 F = Vec2::Zero();
   double T = 0.0;
-  for (const GroundSite& site : mesh.CanTouch(c, s, body.p.y())) {
-    const double ry = s * site.p.x() + c * site.p.y();
-    const double depth = -(body.p.y() + ry);
+  for (const GroundSite& site : mesh.CanTouch(view.c, view.s, view.y)) {
+    const double depth = view.Depth(site.p);
     if (depth <= 0.0) continue;
-    const double rx = c * site.p.x() - s * site.p.y();
+    const double rx = view.c * site.p.x() - view.s * site.p.y(), ry = view.Rise(site.p);
     const Vec2 v_site(body.v.x() - body.rate * ry, body.v.y() + body.rate * rx);
     double f_n;
     if (!FoundationNormal<double>(law, site.area, depth, -v_site.y(), &f_n, r)) continue;
@@ -52,13 +51,9 @@ void MeshInBox<double>(const FoundationLaw& law, double scale, const std::vector
                        const BodyMotion<double>& m, const BodyMotion<double>& o, const Vec2& half_o,
                        Wrench<double>* w_m, Wrench<double>* w_o, ContactReport* r, double report_sign) {
   // in the other box's frame: the mesh's reference point u0 and its turn
-  const double c_rel = m.cos * o.cos + m.sin * o.sin, s_rel = m.sin * o.cos - m.cos * o.sin;
-  const Vec2 u0 = ToFrame(o.cos, o.sin, m.p - o.p);
-  // only sites within the x extent of the other box's bounding box in the
-  // mesh's frame can be inside it
-  const double centre_x = -ToFrame(m.cos, m.sin, m.p - o.p).x();
-  const double reach = std::abs(c_rel) * half_o.x() + std::abs(s_rel) * half_o.y();
-  const auto [first, last] = SitesWithinX(sites, centre_x - reach, centre_x + reach);
+  const BoxView view(m, o);
+  const Vec2& u0 = view.u0;
+  const auto [first, last] = view.Candidates(sites, half_o);
   // the other box's velocity relative to the mesh's at a point u of its frame:
   // R_o^T (v_o - v_m) + w_o perp(u) - w_m perp(u - u0) = B + dw perp(u)
   const Vec2 B = ToFrame(o.cos, o.sin, o.v - m.v) + m.rate * Perp(u0);
@@ -68,8 +63,9 @@ void MeshInBox<double>(const FoundationLaw& law, double scale, const std::vector
   double T = 0.0;
   for (auto it = first; it != last; ++it) {
     const BoxSite& site = *it;
-    const Vec2 u(u0.x() + c_rel * site.p.x() - s_rel * site.p.y(), u0.y() + s_rel * site.p.x() + c_rel * site.p.y());
-    const double e_x = half_o.x() - std::abs(u.x()), e_y = half_o.y() - std::abs(u.y());
+    const Vec2 u = view.Site(site.p);
+    const Vec2 margins = BoxMargins(half_o, u);
+    const double e_x = margins.x(), e_y = margins.y();
     if (e_x <= 0.0 || e_y <= 0.0) continue;
     // the nearest face and its outward normal (none in the plane for a z face)
     double depth;
@@ -111,8 +107,9 @@ void MeshInSphere<double>(const FoundationLaw& law, const std::vector<SphereSite
                           Wrench<double>* w_k, ContactReport* r) {
   const double r2 = radius * radius;
   // in the mesh's frame: the sphere's centre
-  const Vec2 centre = ToFrame(m.cos, m.sin, k.p - m.p);
-  const auto [first, last] = SitesWithinX(sites, centre.x() - radius, centre.x() + radius);
+  const SphereView view(m, k);
+  const Vec2& centre = view.centre;
+  const auto [first, last] = view.Candidates(sites, radius);
   // the knee's velocity relative to the mesh's at a point u of the mesh's
   // frame: R_m^T (v_k - v_m) + w_k perp(u - centre) - w_m perp(u) = B + dw perp(u)
   const Vec2 B = ToFrame(m.cos, m.sin, k.v - m.v) - k.rate * Perp(centre);
@@ -122,14 +119,13 @@ void MeshInSphere<double>(const FoundationLaw& law, const std::vector<SphereSite
   double T = 0.0;
   for (auto it = first; it != last; ++it) {
     const SphereSite& site = *it;
-    const Vec2 d = site.p - centre;
-    const double d3_squared = d.squaredNorm() + site.dz2;
+    const double d3_squared = view.SquaredDistance(site);
     if (d3_squared >= r2) continue;
     // in 3D the normal runs from the sphere's centre through the site; its
     // part in the plane is d / d3
     const double d3 = std::sqrt(d3_squared);
     const double depth = radius - d3;
-    const Vec2 normal = d / d3;
+    const Vec2 normal = (site.p - centre) / d3;
     const Vec2 point = site.p + (law.squish * depth) * normal;
     const Vec2 v_rel = B + dw * Perp(point);
     const double d_rate = v_rel.dot(normal);
