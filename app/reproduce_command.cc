@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -16,10 +17,14 @@
 #include "app/statistics.h"
 #include "app/validators.h"
 #include "evolve/reproduction.h"
+#include "evolve/run_files.h"
+#include "evolve/time_left.h"
 #include "files/errors.h"
 
 namespace walkers::app {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct ReproduceOptions {
   std::vector<std::string> learners = {DefaultLearner().name};
@@ -59,12 +64,15 @@ int RunReproduce(const ReproduceOptions& opt) {
   const int runs_at_once = opt.runs_at_once > 0 ? opt.runs_at_once : evaluator->slots();
 
   const auto start = std::chrono::steady_clock::now();
-  const int total = static_cast<int>(PlanRuns(config).size());
+  const std::vector<PlannedRun> plan = PlanRuns(config);
+  const int total = static_cast<int>(plan.size());
   int index = 0;  // runs started
-  // Time left for all runs, from this session's pace: generations are
-  // counted as not done until their run starts and says how many it has.
-  long generations_left = static_cast<long>(total) * config.generations;
-  long generations_done = 0;  // in this session
+  // Time left for all runs (evolve/time_left.h): a run's generations count as
+  // not done until it starts and says how many it has; a run finished before
+  // this session lends its kind the cost of each generation.
+  const auto kind_of = [](const PlannedRun& run) { return run.name.substr(0, run.name.rfind('-')); };
+  TimeLeft time_left(config.generations);
+  for (const PlannedRun& run : plan) time_left.AddRun(run.name, kind_of(run), 0);
   // one progress line per run; with runs side by side they take turns
   std::map<std::string, std::unique_ptr<Progress>> progress;
   const auto finish_lines = [&] {
@@ -78,7 +86,10 @@ int RunReproduce(const ReproduceOptions& opt) {
                  completed >= run.config.generations ? ", done already"
                  : completed > 0                      ? (", resuming after generation " + std::to_string(completed)).c_str()
                                                       : "");
-    generations_left -= std::min(completed, run.config.generations);
+    time_left.AddRun(run.name, kind_of(run), completed);
+    if (completed >= run.config.generations) {
+      time_left.AddFinished(kind_of(run), GenerationCosts(RunFiles((fs::path(opt.out) / run.name).string()).generations));
+    }
     progress[run.name] = std::make_unique<Progress>(run.name);
   };
   observer.on_rescore = [&](int done, int needed) {
@@ -86,14 +97,13 @@ int RunReproduce(const ReproduceOptions& opt) {
     std::fprintf(stderr, "re-scored %d of %d finals (ensembles of %d)\n", done, needed, config.ensemble);
   };
   observer.on_generation = [&](const PlannedRun& run, const GenerationSummary& s) {
-    --generations_left;
-    ++generations_done;
+    time_left.Done(run.name, s.generation);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // every other run's line is ended before this one is drawn in place
     for (auto& [name, p] : progress) {
       if (name != run.name) p->Finish();
     }
-    progress.at(run.name)->Report(s, elapsed / generations_done * generations_left);
+    progress.at(run.name)->Report(s, time_left.Estimate(elapsed));
   };
   // the directory stays locked until the figures are drawn
   Reproduction reproduction(config, opt.out, opt.start.mode());
