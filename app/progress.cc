@@ -28,7 +28,8 @@ Progress::Progress(std::string label, double log_interval_s)
       start_(std::chrono::steady_clock::now()),
       last_log_(start_) {}
 
-void Progress::Report(const GenerationSummary& s, std::optional<double> all_left_s) {
+void Progress::Report(const GenerationSummary& s, std::optional<double> all_left_s,
+                      std::optional<double> run_left_s) {
   const auto now = std::chrono::steady_clock::now();
   if (first_generation_ < 0) first_generation_ = s.generation;
   const bool last = s.generation + 1 == s.generations;
@@ -38,10 +39,10 @@ void Progress::Report(const GenerationSummary& s, std::optional<double> all_left
   }
   last_log_ = now;
 
-  // time left, from this session's pace
+  // time left: the caller's, or from this session's pace
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const int done = s.generation + 1 - first_generation_;
-  const double left = elapsed / done * (s.generations - s.generation - 1);
+  const double left = run_left_s.value_or(elapsed / done * (s.generations - s.generation - 1));
   // all runs cannot end before this one: never show less than its own estimate
   const std::string all = all_left_s ? ", all runs " + FormatDuration(std::max(*all_left_s, left)) : "";
   char line[320];

@@ -14,8 +14,11 @@ class Progress {
  public:
   explicit Progress(std::string label, double log_interval_s = 5.0);
   // `all_left_s`: the caller's estimate of the time left for a whole batch
-  // of runs (walkers reproduce), shown after the run's own.
-  void Report(const GenerationSummary& s, std::optional<double> all_left_s = std::nullopt);
+  // of runs (walkers reproduce), shown after the run's own. `run_left_s`: the
+  // caller's estimate of the run's own; without it, this session's pace
+  // over the generations left.
+  void Report(const GenerationSummary& s, std::optional<double> all_left_s = std::nullopt,
+              std::optional<double> run_left_s = std::nullopt);
   // Ends the in-place line, if any.
   void Finish();
 

@@ -67,7 +67,7 @@ int RunReproduce(const ReproduceOptions& opt) {
   const std::vector<PlannedRun> plan = PlanRuns(config);
   const int total = static_cast<int>(plan.size());
   int index = 0;  // runs started
-  // Time left for all runs (evolve/time_left.h): a run's generations count as
+  // Time left for each run and all runs (evolve/time_left.h): a run's generations count as
   // not done until it starts and says how many it has; a run finished before
   // this session lends its kind the cost of each generation.
   const auto kind_of = [](const PlannedRun& run) { return run.name.substr(0, run.name.rfind('-')); };
@@ -97,13 +97,13 @@ int RunReproduce(const ReproduceOptions& opt) {
     std::fprintf(stderr, "re-scored %d of %d finals (ensembles of %d)\n", done, needed, config.ensemble);
   };
   observer.on_generation = [&](const PlannedRun& run, const GenerationSummary& s) {
-    time_left.Done(run.name, s.generation);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    time_left.Done(run.name, s.generation, elapsed);
     // every other run's line is ended before this one is drawn in place
     for (auto& [name, p] : progress) {
       if (name != run.name) p->Finish();
     }
-    progress.at(run.name)->Report(s, time_left.Estimate(elapsed));
+    progress.at(run.name)->Report(s, time_left.Estimate(elapsed), time_left.RunLeft(run.name, elapsed));
   };
   // the directory stays locked until the figures are drawn
   Reproduction reproduction(config, opt.out, opt.start.mode());

@@ -22,9 +22,19 @@ void TimeLeft::AddRun(const std::string& name, const std::string& kind, int comp
   runs_[name] = Run{kind, completed, completed};
 }
 
-void TimeLeft::Done(const std::string& name, int generation) {
+void TimeLeft::Done(const std::string& name, int generation, double now_s) {
   const auto it = runs_.find(name);
-  if (it != runs_.end()) it->second.next = std::clamp(generation + 1, it->second.next, generations_);
+  if (it == runs_.end()) return;
+  Run& run = it->second;
+  run.next = std::clamp(generation + 1, run.next, generations_);
+  if (run.paced_from < 0) {
+    run.paced_from = run.next;
+    run.paced_since = now_s;
+  }
+  if (first_run_.empty()) {
+    first_run_ = name;
+    first_done_s_ = now_s;
+  }
 }
 
 const std::vector<double>& TimeLeft::Prefix(const std::string& kind) const {
@@ -50,15 +60,31 @@ const std::vector<double>& TimeLeft::Prefix(const std::string& kind) const {
   return prefix_[key] = std::move(prefix);
 }
 
-std::optional<double> TimeLeft::Estimate(double elapsed_s) const {
-  double done = 0.0, left = 0.0;
+std::optional<double> TimeLeft::Estimate(double now_s) const {
+  if (first_run_.empty()) return std::nullopt;
+  double done = 0.0, paced = 0.0, left = 0.0;
   for (const auto& [name, run] : runs_) {
     const std::vector<double>& prefix = Prefix(run.kind);
     done += prefix[run.next] - prefix[run.first];
+    // the session's first generation marks the start of its pace
+    const int from = name == first_run_ && run.paced_from >= 0 ? run.paced_from : run.first;
+    paced += prefix[run.next] - prefix[from];
     left += prefix[generations_] - prefix[run.next];
   }
+  if (paced > 0.0) return (now_s - first_done_s_) / paced * left;
+  // the first generation alone: its time with the starting up
+  if (done > 0.0) return now_s / done * left;
+  return std::nullopt;
+}
+
+std::optional<double> TimeLeft::RunLeft(const std::string& name, double now_s) const {
+  const auto it = runs_.find(name);
+  if (it == runs_.end() || it->second.paced_from < 0) return std::nullopt;
+  const Run& run = it->second;
+  const std::vector<double>& prefix = Prefix(run.kind);
+  const double done = prefix[run.next] - prefix[run.paced_from];
   if (!(done > 0.0)) return std::nullopt;
-  return elapsed_s / done * left;
+  return (now_s - run.paced_since) / done * (prefix[generations_] - prefix[run.next]);
 }
 
 std::vector<double> GenerationCosts(const std::string& generations_csv) {

@@ -29,19 +29,26 @@ class TimeLeft {
   // A run of the batch, of `kind`, with `completed` generations done before
   // this session (0 for a run not started; added again when it starts).
   void AddRun(const std::string& name, const std::string& kind, int completed);
-  // Generation `generation` (0-based) of run `name` is done.
-  void Done(const std::string& name, int generation);
+  // Generation `generation` (0-based) of run `name` is done, `now_s` seconds
+  // into the session. The pace is measured from the end of the first
+  // generation done, so that loading and starting up do not count as work.
+  void Done(const std::string& name, int generation, double now_s);
 
-  // The time left `elapsed_s` seconds into the session: the expected cost of
-  // every run's generations not done, at the session's pace. None before the
-  // session has done a generation.
-  std::optional<double> Estimate(double elapsed_s) const;
+  // The time left for all runs at `now_s`: the expected cost of every run's
+  // generations not done, at the session's pace (after its first generation
+  // alone, the pace since the session began). None before a generation.
+  std::optional<double> Estimate(double now_s) const;
+  // The time left for run `name` alone at `now_s`: the expected cost of its
+  // generations not done, at its own pace since its first generation here.
+  std::optional<double> RunLeft(const std::string& name, double now_s) const;
 
  private:
   struct Run {
     std::string kind;
     int first = 0;  // the first generation done in this session
     int next = 0;   // the next generation to do
+    int paced_from = -1;     // the generation after its first one done here; -1 before
+    double paced_since = 0;  // when that first one was done
   };
   // the expected cost of generations [0, g) of a kind: its prefix sums
   const std::vector<double>& Prefix(const std::string& kind) const;
@@ -49,6 +56,9 @@ class TimeLeft {
   int generations_;
   std::map<std::string, std::vector<std::vector<double>>> finished_;  // by kind
   std::map<std::string, Run> runs_;
+  // the session's first generation done: its run, and when
+  std::string first_run_;
+  double first_done_s_ = 0;
   mutable std::map<std::string, std::vector<double>> prefix_;  // by kind; "" for every finished run
 };
 
