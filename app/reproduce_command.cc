@@ -18,6 +18,7 @@
 #include "app/validators.h"
 #include "evolve/reproduction.h"
 #include "evolve/run_files.h"
+#include "evolve/scaffold.h"
 #include "evolve/time_left.h"
 #include "files/errors.h"
 
@@ -67,10 +68,13 @@ int RunReproduce(const ReproduceOptions& opt) {
   const std::vector<PlannedRun> plan = PlanRuns(config);
   const int total = static_cast<int>(plan.size());
   int index = 0;  // runs started
-  // Time left for each run and all runs (evolve/time_left.h): a run's generations count as
-  // not done until it starts and says how many it has; a run finished before
-  // this session lends its kind the cost of each generation.
-  const auto kind_of = [](const PlannedRun& run) { return run.name.substr(0, run.name.rfind('-')); };
+  // Time left for each run and all runs (evolve/time_left.h): a run's
+  // generations count as not done until it starts and says how many it has; a
+  // run finished before this session lends its kind (learner and case) the
+  // cost of each generation.
+  const auto kind_of = [](const PlannedRun& run) {
+    return run.config.learner + " " + ScaffoldCaseName(run.scaffold_case);
+  };
   TimeLeft time_left(config.generations);
   for (const PlannedRun& run : plan) time_left.AddRun(run.name, kind_of(run), 0);
   // one progress line per run; with runs side by side they take turns

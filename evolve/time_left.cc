@@ -1,7 +1,6 @@
 #include "evolve/time_left.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "files/csv.h"
 #include "files/errors.h"

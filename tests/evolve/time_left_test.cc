@@ -13,7 +13,8 @@ namespace {
 
 // Without a finished run every generation costs the same: the pace of the
 // generations done, over the generations left. The pace runs from the end of
-// the session's first generation: 10 s of starting up before it do not count.
+// the session's first generation: the 10 s of starting up before it count
+// only while it is the only generation done.
 TEST(TimeLeftTest, WithoutFinishedRunsEveryGenerationCostsTheSame) {
   TimeLeft t(10);
   t.AddRun("free-1", "free", 0);
